@@ -1,0 +1,90 @@
+// sylva — the command line over the engine's public API.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+#include "api/simulation.h"
+#include "build/model_builder.h"
+#include "io/output_file.h"
+#include "io/string_text.h"
+#include "support/diagnostic.h"
+
+namespace {
+
+struct CommonOptions {
+  sylva::build::BuildOptions build;
+};
+
+void add_build_options(CLI::App& command, CommonOptions& o) {
+  command.add_option("--cache-dir", o.build.cache_dir,
+                     "Where compiled models are kept (default: $SYLVA_CACHE_DIR or ~/.cache/sylva)");
+  command.add_option("--compiler", o.build.compiler, "C++ compiler for models (default: $SYLVA_CXX, $CXX or g++)");
+  command.add_option("-D,--define", o.build.defines, "Preprocessor definition NAME[=VALUE] for the model");
+  command.add_flag("-v,--verbose", o.build.verbose, "Say when a model is compiled");
+}
+
+int run_command(const std::string& model, int steps, const std::string& string_path,
+                const std::string& interpreted_path, const CommonOptions& o) {
+  sylva::Simulation simulation(model, o.build);
+  sylva::derive::Derivation& d = simulation.derivation();
+  d.run(steps);
+  if (!interpreted_path.empty()) {
+    sylva::ModuleString shown = d.interpreted();
+    sylva::io::write_output_file(interpreted_path, sylva::io::format_string(shown, d.types()));
+  }
+  if (!string_path.empty() || interpreted_path.empty())
+    sylva::io::write_output_file(string_path.empty() ? "-" : string_path,
+                                 sylva::io::format_string(d.string(), d.types()));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Sylva: L-system plant modelling. Runs L+C models as lpfg does."};
+  app.require_subcommand(1);
+
+  CommonOptions run_options;
+  std::string run_model, string_path, interpreted_path;
+  int steps = -1;
+  CLI::App* run = app.add_subcommand("run", "Derive a model and write its final string");
+  run->add_option("model", run_model, "The model file (L+C, usually *.l)")->required();
+  run->add_option("--steps,-n", steps, "Number of derivation steps (default: the model's derivation length)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--string,-s", string_path,
+                  "Write the final string to FILE ('-' for standard output; the default when no other output is "
+                  "asked for)");
+  run->add_option("--interpreted", interpreted_path,
+                  "Write the final string after interpretation rules (what the turtle draws) to FILE or '-'");
+  add_build_options(*run, run_options);
+
+  CommonOptions translate_options;
+  std::string translate_model, translate_output = "-";
+  CLI::App* translate = app.add_subcommand("translate", "Print the C++ a model is translated into");
+  translate->add_option("model", translate_model, "The model file")->required();
+  translate->add_option("-o,--output", translate_output, "Write the C++ to FILE instead of standard output");
+  add_build_options(*translate, translate_options);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  try {
+    if (*run) return run_command(run_model, steps, string_path, interpreted_path, run_options);
+    if (*translate) {
+      sylva::io::write_output_file(translate_output,
+                                   sylva::build::translate_model(translate_model, translate_options.build));
+      return 0;
+    }
+  } catch (const sylva::ModelError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sylva: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,213 @@
+#include "build/model_builder.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lang/translator.h"
+#include "support/content_hash.h"
+#include "support/diagnostic.h"
+#include "support/subprocess.h"
+
+#ifndef SYLVA_RUNTIME_INCLUDE_DIR
+#define SYLVA_RUNTIME_INCLUDE_DIR ""
+#endif
+
+namespace sylva::build {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Bumped whenever generated code or the runtime's contract changes.
+constexpr const char* kCacheFormat = "sylva-model-cache-3";
+
+const std::vector<std::string> kCompileFlags = {
+    "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",
+    // Plain IEEE arithmetic as the reference implementation does it: no fused
+    // multiply-add, so float results match to the last bit.
+    "-ffp-contract=off", "-w"};
+
+std::string env_or(const char* name, const std::string& fallback) {
+  const char* value = std::getenv(name);
+  return value && *value ? value : fallback;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Writes through a temporary file and a rename, so readers never see half a file.
+void write_file_atomically(const fs::path& path, const std::string& content) {
+  fs::path tmp = path;
+  tmp += ".tmp" + std::to_string(getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << content;
+    if (!out) throw ModelError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+// Size and modification time: enough to notice an edited file.
+std::string file_stamp(const std::string& path) {
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) return "missing";
+  return std::to_string(st.st_size) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
+         std::to_string(st.st_mtim.tv_nsec);
+}
+
+std::string find_in_path(const std::string& program) {
+  if (program.find('/') != std::string::npos) return program;
+  std::stringstream dirs(env_or("PATH", "/usr/bin:/bin"));
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    fs::path candidate = fs::path(dir) / program;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  return program;
+}
+
+struct ResolvedOptions {
+  std::string compiler;
+  fs::path cache_dir;
+  std::string runtime;
+  std::vector<std::string> defines;
+};
+
+ResolvedOptions resolve(const BuildOptions& options) {
+  ResolvedOptions r;
+  r.compiler = options.compiler.empty() ? default_compiler() : options.compiler;
+  r.cache_dir = options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
+  r.runtime = options.runtime_include_dir.empty() ? default_runtime_include_dir() : options.runtime_include_dir;
+  r.defines = options.defines;
+  return r;
+}
+
+lang::TranslatorOptions translator_options(const ResolvedOptions& r) {
+  return lang::TranslatorOptions{r.compiler, r.runtime, r.defines};
+}
+
+// The key of the direct lookup: the model file itself and the tools.
+std::string direct_key(const std::string& model_path, const std::string& source, const ResolvedOptions& r) {
+  ContentHash h;
+  h.add(kCacheFormat);
+  h.add(fs::absolute(model_path).string());
+  h.add(source);
+  h.add(r.compiler);
+  h.add(file_stamp(find_in_path(r.compiler)));
+  h.add(r.runtime);
+  for (const std::string& d : r.defines) h.add(d);
+  return h.hex();
+}
+
+// A manifest records which library a model built into and the files it read.
+bool manifest_still_valid(const fs::path& manifest, std::string* library) {
+  std::ifstream in(manifest);
+  if (!in) return false;
+  std::string line;
+  bool have_library = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("library ", 0) == 0) {
+      *library = line.substr(8);
+      have_library = true;
+    } else if (line.rfind("dep ", 0) == 0) {
+      std::size_t space = line.find(' ', 4);
+      if (space == std::string::npos) return false;
+      if (file_stamp(line.substr(space + 1)) != line.substr(4, space - 4)) return false;
+    }
+  }
+  return have_library && fs::exists(*library);
+}
+
+// Compiler messages name the model's lines already (the generated code carries
+// line markers); drop the lines that only name generated functions.
+std::string compiler_messages(const std::string& err) {
+  std::stringstream in(err);
+  std::string line, kept;
+  while (std::getline(in, line)) {
+    if (line.find("In function") != std::string::npos && line.find("sylva_") != std::string::npos) continue;
+    if (line.find("At global scope") != std::string::npos) continue;
+    if (line.find("compilation terminated") != std::string::npos) continue;
+    kept += line + "\n";
+  }
+  while (!kept.empty() && kept.back() == '\n') kept.pop_back();
+  return kept;
+}
+
+}  // namespace
+
+std::string default_compiler() { return env_or("SYLVA_CXX", env_or("CXX", "g++")); }
+
+std::string default_cache_dir() {
+  if (const char* dir = std::getenv("SYLVA_CACHE_DIR"); dir && *dir) return dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/sylva";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/sylva";
+  return (fs::temp_directory_path() / "sylva-cache").string();
+}
+
+std::string default_runtime_include_dir() { return env_or("SYLVA_RUNTIME_DIR", SYLVA_RUNTIME_INCLUDE_DIR); }
+
+std::string translate_model(const std::string& model_path, const BuildOptions& options) {
+  return lang::translate_file(model_path, translator_options(resolve(options))).cpp;
+}
+
+BuiltModel build_model(const std::string& model_path, const BuildOptions& options) {
+  ResolvedOptions r = resolve(options);
+  std::error_code ec;
+  if (!fs::is_regular_file(model_path, ec))
+    throw ModelError(SourceLocation{model_path, 0, 0}, fs::exists(model_path, ec) ? "is not a file" : "no such file");
+  fs::create_directories(r.cache_dir, ec);
+  if (ec) throw ModelError("cannot create the model cache " + r.cache_dir.string() + ": " + ec.message());
+
+  std::string source = read_file(model_path);
+  fs::path manifest = r.cache_dir / (direct_key(model_path, source, r) + ".manifest");
+  std::string library;
+  if (manifest_still_valid(manifest, &library)) return BuiltModel{library, false};
+
+  lang::Translation translation = lang::translate_file(model_path, translator_options(r));
+  ContentHash h;
+  h.add(kCacheFormat);
+  h.add(r.compiler);
+  for (const std::string& flag : kCompileFlags) h.add(flag);
+  h.add(translation.cpp);
+  std::string key = h.hex();
+  fs::path so = r.cache_dir / (key + ".so");
+  BuiltModel built{so.string(), false};
+
+  if (!fs::exists(so)) {
+    fs::path ii = r.cache_dir / (key + ".ii");
+    write_file_atomically(ii, translation.cpp);
+    fs::path tmp = so;
+    tmp += ".tmp" + std::to_string(getpid());
+    std::vector<std::string> argv = {r.compiler};
+    argv.insert(argv.end(), kCompileFlags.begin(), kCompileFlags.end());
+    argv.insert(argv.end(), {"-o", tmp.string(), ii.string()});
+    if (options.verbose) fprintf(stderr, "sylva: compiling %s\n", model_path.c_str());
+    ProcessResult result = run_process(argv);
+    if (result.exit_code != 0) {
+      fs::remove(tmp, ec);
+      std::string messages = compiler_messages(result.err);
+      if (messages.empty()) messages = model_path + ": error: the C++ compiler (" + r.compiler + ") failed";
+      throw ModelError(messages);
+    }
+    fs::rename(tmp, so);
+    built.compiled_now = true;
+  }
+
+  std::string manifest_text = "library " + so.string() + "\n";
+  for (const std::string& dep : translation.dependencies) {
+    std::string path = fs::absolute(dep, ec).string();
+    manifest_text += "dep " + file_stamp(path) + " " + path + "\n";
+  }
+  write_file_atomically(manifest, manifest_text);
+  return built;
+}
+
+}  // namespace sylva::build

@@ -1,0 +1,36 @@
+// Turns a model file into a loadable shared library, through a cache keyed by
+// content: an unchanged model (and unchanged files it includes) is never
+// translated or compiled again.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sylva::build {
+
+struct BuildOptions {
+  std::string compiler;             // empty: $SYLVA_CXX, $CXX, then g++
+  std::string cache_dir;            // empty: $SYLVA_CACHE_DIR or ~/.cache/sylva
+  std::string runtime_include_dir;  // empty: the runtime this program was built with
+  std::vector<std::string> defines;
+  bool verbose = false;             // say what is being done on stderr
+};
+
+struct BuiltModel {
+  std::string library_path;
+  bool compiled_now = false;  // false: taken from the cache
+};
+
+// Throws ModelError with the model's file and line for translation errors and
+// for C++ errors in the model's code.
+BuiltModel build_model(const std::string& model_path, const BuildOptions& options);
+
+// The C++ the model translates to (what `sylva translate` prints).
+std::string translate_model(const std::string& model_path, const BuildOptions& options);
+
+// Defaults resolved from the environment.
+std::string default_compiler();
+std::string default_cache_dir();
+std::string default_runtime_include_dir();
+
+}  // namespace sylva::build

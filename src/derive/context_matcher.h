@@ -1,0 +1,36 @@
+// Context matching on branching strings, as the LPFG manual's chapter 9 gives
+// it. Right context skips lateral branches and, after an expected ']', the rest
+// of the branch; left context sees the path to the root: '[' is passed over
+// and a whole branch ending in ']' is skipped. Modules filtered out by
+// ignore:/consider: are passed over; SB and EB always count.
+#pragma once
+
+#include <cstdint>
+
+#include "lstring/module_string.h"
+
+namespace sylva::derive {
+
+// `skipped[id]` is nonzero for modules context matching passes over; null
+// means every module counts.
+using SkipTable = const std::uint8_t*;
+
+// Matches `pattern` (n modules, in string order) starting at `pos` and going
+// right. On success params[k] points at the parameters of the module matched
+// by pattern[k].
+bool match_right_context(const StringView& s, std::size_t pos, const ModuleId* pattern, int n, SkipTable skipped,
+                         const unsigned char** params);
+
+// Matches `pattern` (n modules, in string order) so that its last module
+// comes before `pos`, going left.
+bool match_left_context(const StringView& s, std::size_t pos, const ModuleId* pattern, int n, SkipTable skipped,
+                        const unsigned char** params);
+
+// Offset just past the EB closing the branch whose SB is at `sb` (or the end).
+std::size_t skip_branch_forward(const StringView& s, std::size_t sb);
+// Offset of the first EB at this nesting level from `pos` on (or the end).
+std::size_t find_unmatched_end(const StringView& s, std::size_t pos);
+// Offset of the SB opening the branch whose EB starts at `eb` (or begin).
+std::size_t skip_branch_backward(const StringView& s, std::size_t eb);
+
+}  // namespace sylva::derive

@@ -1,0 +1,309 @@
+#include "derive/derivation.h"
+
+#include <cstdio>
+
+#include "support/diagnostic.h"
+#include "sylva/predefined_ids.h"
+
+namespace sylva::derive {
+namespace {
+
+using abi::RuleKind;
+
+constexpr int kMaxPattern = 64;
+
+int pattern_length(const abi::Rule& rule) {
+  int n = 0;
+  for (int part = 0; part < abi::kPatternParts; ++part) n += rule.part_length[part];
+  return n;
+}
+
+// Rules of the current group first, then group 0's as the fallback.
+template <class TryRule>
+bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rule* rules, int group,
+                    TryRule&& try_rule) {
+  for (std::uint32_t r : candidates)
+    if (rules[r].group == group && try_rule(rules[r])) return true;
+  if (group != 0)
+    for (std::uint32_t r : candidates)
+      if (rules[r].group == 0 && try_rule(rules[r])) return true;
+  return false;
+}
+
+}  // namespace
+
+Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
+    : model_(model), types_(ModuleTypes::from_model(model)), rules_(model), messages_(std::move(messages)) {
+  for (std::uint32_t r = 0; r < model.rule_count; ++r)
+    if (pattern_length(model.rules[r]) > kMaxPattern)
+      throw ModelError(SourceLocation{model.rules[r].file, model.rules[r].line, 0},
+                       "a predecessor may have at most " + std::to_string(kMaxPattern) + " modules");
+  for (std::uint32_t f = 0; f < model.filter_count; ++f) {
+    const abi::ContextFilter& filter = model.filters[f];
+    std::vector<std::uint8_t> skipped(model.module_count, filter.consider ? 1 : 0);
+    for (std::uint32_t k = 0; k < filter.count; ++k) skipped[filter.ids[k]] = filter.consider ? 0 : 1;
+    skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
+    skip_tables_.push_back(std::move(skipped));
+  }
+  model_.control->host = this;
+  model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
+}
+
+Derivation::~Derivation() {
+  model_.control->host = nullptr;
+  model_.control->message = nullptr;
+}
+
+void Derivation::message(const std::string& text) const {
+  if (messages_) messages_(text);
+  else std::fputs(text.c_str(), stderr);
+}
+
+SkipTable Derivation::skip_table(const abi::Rule& rule) const {
+  return rule.filter < 0 ? nullptr : skip_tables_[static_cast<std::size_t>(rule.filter)].data();
+}
+
+int Derivation::derivation_length() const {
+  return model_.derivation_length ? model_.derivation_length() : 0;
+}
+
+// ---- control flow ------------------------------------------------------------
+
+void Derivation::begin() {
+  abi::ControlState& c = control();
+  c.forward = true;
+  c.stop_requested = false;
+  c.step = 0;
+  c.current_group = c.next_group = 0;
+  steps_done_ = 0;
+  depth_warnings_.clear();
+  if (model_.start) model_.start();
+  if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
+  string_.clear();
+  model_.axiom(string_.buffer());
+  if (rules_.has_rules(RuleKind::Decomposition)) {
+    next_.clear();
+    int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
+    expand(RuleKind::Decomposition, string_.view(types_), 0, depth, next_);
+    std::swap(string_, next_);
+  }
+  begun_ = true;
+}
+
+void Derivation::step() {
+  if (!begun_) begin();
+  abi::ControlState& c = control();
+  if (model_.start_each) model_.start_each();
+  c.current_group = c.next_group;
+  if (c.forward) derive_forward();
+  else derive_backward();
+  std::swap(string_, next_);
+  ++steps_done_;
+  c.step = steps_done_;
+  if (rules_.has_rules(RuleKind::Decomposition)) {
+    next_.clear();
+    int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
+    expand(RuleKind::Decomposition, string_.view(types_), 0, depth, next_);
+    std::swap(string_, next_);
+  }
+  if (model_.end_each) model_.end_each();
+}
+
+void Derivation::finish() {
+  if (model_.end) model_.end();
+}
+
+void Derivation::run(int steps) {
+  begin();
+  if (steps < 0) steps = derivation_length();
+  for (int k = 0; k < steps && !stop_requested(); ++k) step();
+  finish();
+}
+
+ModuleString Derivation::interpreted() {
+  ModuleString out;
+  if (!rules_.has_rules(RuleKind::Interpretation)) {
+    out.assign(string_.data(), string_.size_bytes());
+    return out;
+  }
+  int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
+  expand(RuleKind::Interpretation, string_.view(types_), 0, depth, out);
+  return out;
+}
+
+// ---- matching one rule -------------------------------------------------------
+
+bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::size_t pos, ModuleString& out,
+                             const StringView& new_string, bool call_body, std::size_t* consumed) {
+  const int nl = rule.part_length[abi::kNewLeft], l = rule.part_length[abi::kLeft];
+  const int s = rule.part_length[abi::kStrict], r = rule.part_length[abi::kRight];
+  if (rule.part_length[abi::kNewRight] > 0) return false;  // needs backward derivation
+  const unsigned char* params[kMaxPattern];
+  const ModuleId* strict = rule.pattern + nl + l;
+  std::size_t at = pos;
+  for (int k = 0; k < s; ++k) {
+    if (at >= src.end || src.id_at(at) != strict[k]) return false;
+    params[nl + l + k] = module_params(src.data, at);
+    at = src.next(at);
+  }
+  SkipTable skipped = skip_table(rule);
+  if (l && !match_left_context(src, pos, rule.pattern + nl, l, skipped, params + nl)) return false;
+  if (r && !match_right_context(src, at, strict + s, r, skipped, params + nl + l + s)) return false;
+  if (nl && !match_left_context(new_string, new_string.end, rule.pattern, nl, skipped, params)) return false;
+  if (!call_body) return true;
+  const std::size_t mark = out.size_bytes();
+  abi::RuleCall call{out.buffer(), false};
+  rule.body(&call, params);
+  if (!call.produced) {
+    out.truncate(mark);  // no produce: the rule did not apply, and nproduce'd modules go
+    return false;
+  }
+  *consumed = at;
+  return true;
+}
+
+bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std::size_t end,
+                              const StringView& new_string, std::size_t* consumed) {
+  const int nl = rule.part_length[abi::kNewLeft], l = rule.part_length[abi::kLeft];
+  const int s = rule.part_length[abi::kStrict], r = rule.part_length[abi::kRight];
+  const int nr = rule.part_length[abi::kNewRight];
+  if (nl > 0) return false;  // needs forward derivation
+  const unsigned char* params[kMaxPattern];
+  const ModuleId* strict = rule.pattern + l;
+  std::size_t at = end;
+  for (int k = s - 1; k >= 0; --k) {
+    if (at <= src.begin || module_id_before(src.data, at) != strict[k]) return false;
+    at = src.previous(at);
+    params[l + k] = module_params(src.data, at);
+  }
+  SkipTable skipped = skip_table(rule);
+  if (l && !match_left_context(src, at, rule.pattern, l, skipped, params)) return false;
+  if (r && !match_right_context(src, end, strict + s, r, skipped, params + l + s)) return false;
+  if (nr && !match_right_context(new_string, new_string.begin, strict + s + r, nr, skipped, params + l + s + r))
+    return false;
+  successor_.clear();
+  abi::RuleCall call{successor_.buffer(), false};
+  rule.body(&call, params);
+  if (!call.produced) return false;
+  *consumed = at;
+  return true;
+}
+
+bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
+                               const StringView& new_string, bool call_body, std::size_t* consumed) {
+  return for_each_group(rules_.forward(kind, src.id_at(pos)), model_.rules, control().current_group,
+                        [&](const abi::Rule& rule) {
+                          return try_forward(rule, src, pos, out, new_string, call_body, consumed);
+                        });
+}
+
+// ---- derivation steps --------------------------------------------------------
+
+void Derivation::derive_forward() {
+  const StringView src = string_.view(types_);
+  next_.clear();
+  next_.reserve(string_.size_bytes() + string_.size_bytes() / 2);
+  std::size_t pos = src.begin;
+  std::size_t run = pos;  // modules from `run` to `pos` are copied unchanged
+  auto flush = [&] {
+    if (pos > run) next_.append(src.data + run, pos - run);
+  };
+  while (pos < src.end) {
+    const ModuleId id = src.id_at(pos);
+    const bool cut = id == rt::mid::Cut;
+    if (!cut && rules_.forward(RuleKind::Production, id).empty()) {
+      pos = src.next(pos);
+      continue;
+    }
+    flush();
+    if (cut) {
+      // Cut drops itself and the rest of its branch; the closing EB stays.
+      pos = find_unmatched_end(src, pos);
+    } else {
+      std::size_t consumed = 0;
+      const StringView built{next_.data(), 0, next_.size_bytes(), types_.encoded_sizes()};
+      if (apply_forward(RuleKind::Production, src, pos, next_, built, true, &consumed)) {
+        pos = consumed;
+      } else {
+        const std::size_t n = src.next(pos);
+        next_.append(src.data + pos, n - pos);
+        pos = n;
+      }
+    }
+    run = pos;
+  }
+  flush();
+}
+
+void Derivation::derive_backward() {
+  const StringView src = string_.view(types_);
+  backward_out_.clear();
+  std::size_t pos = src.end;
+  const int group = control().current_group;
+  while (pos > src.begin) {
+    const ModuleId id = module_id_before(src.data, pos);
+    std::size_t consumed = 0;
+    const auto& candidates = rules_.backward(RuleKind::Production, id);
+    bool applied = false;
+    if (!candidates.empty()) {
+      const StringView built{backward_out_.data(), backward_out_.begin(), backward_out_.end(),
+                             types_.encoded_sizes()};
+      applied = for_each_group(candidates, model_.rules, group, [&](const abi::Rule& rule) {
+        return try_backward(rule, src, pos, built, &consumed);
+      });
+    }
+    if (applied) {
+      backward_out_.prepend(successor_.data(), successor_.size_bytes());
+      pos = consumed;
+    } else {
+      const std::size_t start = src.previous(pos);
+      backward_out_.prepend(src.data + start, pos - start);
+      pos = start;
+    }
+  }
+  next_.assign(backward_out_.data() + backward_out_.begin(), backward_out_.size_bytes());
+}
+
+// ---- decomposition and interpretation -----------------------------------------
+
+void Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out) {
+  while (expansion_scratch_.size() <= static_cast<std::size_t>(depth)) expansion_scratch_.emplace_back();
+  ModuleString& successor = expansion_scratch_[static_cast<std::size_t>(depth)];
+  std::size_t pos = source.begin;
+  std::size_t run = pos;
+  auto flush = [&] {
+    if (pos > run) out.append(source.data + run, pos - run);
+  };
+  while (pos < source.end) {
+    const ModuleId id = source.id_at(pos);
+    if (rules_.forward(kind, id).empty()) {
+      pos = source.next(pos);
+      continue;
+    }
+    flush();
+    const StringView built{out.data(), 0, out.size_bytes(), types_.encoded_sizes()};
+    std::size_t consumed = 0;
+    if (depth >= max_depth) {
+      if (apply_forward(kind, source, pos, successor, built, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+    } else {
+      successor.clear();
+      if (apply_forward(kind, source, pos, successor, built, true, &consumed)) {
+        expand(kind, successor.view(types_), depth + 1, max_depth, out);
+        pos = run = consumed;
+        continue;
+      }
+    }
+    const std::size_t n = source.next(pos);
+    out.append(source.data + pos, n - pos);
+    pos = run = n;
+  }
+  flush();
+}
+
+void Derivation::warn_depth_reached(RuleKind kind, ModuleId id, int max_depth) {
+  if (!depth_warnings_.emplace(static_cast<int>(kind), id).second) return;
+  message(std::string("warning: maximum ") + (kind == RuleKind::Decomposition ? "decomposition" : "interpretation") +
+          " depth (" + std::to_string(max_depth) + ") reached for module " + types_.name(id) + "\n");
+}
+
+}  // namespace sylva::derive

@@ -1,0 +1,90 @@
+// Runs a compiled model: the control statements in the order the LPFG manual
+// gives (Start, axiom, then StartEach / step / decomposition / EndEach for
+// each step, End), derivation steps forward or backward, decomposition after
+// the axiom and every step, and interpretation rules on demand.
+#pragma once
+
+#include <deque>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "derive/rule_index.h"
+#include "lstring/module_string.h"
+#include "lstring/module_types.h"
+#include "sylva/abi.h"
+
+namespace sylva::derive {
+
+class Derivation {
+ public:
+  using MessageSink = std::function<void(const std::string&)>;
+
+  // `messages` receives Printf output and warnings; by default they go to stderr.
+  explicit Derivation(const abi::ModelDescriptor& model, MessageSink messages = {});
+  ~Derivation();
+  Derivation(const Derivation&) = delete;
+  Derivation& operator=(const Derivation&) = delete;
+
+  // Start, the axiom and its decomposition.
+  void begin();
+  // One derivation step: StartEach, the step, decomposition, EndEach.
+  void step();
+  // End.
+  void finish();
+  // begin(), `steps` steps (the model's derivation length if negative) unless
+  // the model calls Stop(), finish().
+  void run(int steps = -1);
+
+  int derivation_length() const;
+  int steps_done() const { return steps_done_; }
+  bool stop_requested() const { return control().stop_requested; }
+
+  const ModuleString& string() const { return string_; }
+  const ModuleTypes& types() const { return types_; }
+  // The string with interpretation rules applied (what the turtle draws).
+  ModuleString interpreted();
+
+ private:
+  struct Scratch;
+
+  abi::ControlState& control() const { return *model_.control; }
+  SkipTable skip_table(const abi::Rule& rule) const;
+
+  // One pass of productions over string_ into next_.
+  void derive_forward();
+  void derive_backward();
+  // Decomposition or interpretation: rules applied recursively to each module
+  // and its successors, up to max_depth levels.
+  void expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out);
+
+  // Tries the rules for the module at `pos`; on success returns true with
+  // `*consumed` the offset past the strict predecessor.
+  bool apply_forward(abi::RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
+                     const StringView& new_string, bool call_body, std::size_t* consumed);
+  bool try_forward(const abi::Rule& rule, const StringView& src, std::size_t pos, ModuleString& out,
+                   const StringView& new_string, bool call_body, std::size_t* consumed);
+  bool try_backward(const abi::Rule& rule, const StringView& src, std::size_t end, const StringView& new_string,
+                    std::size_t* consumed);
+
+  void warn_depth_reached(abi::RuleKind kind, ModuleId id, int max_depth);
+  void message(const std::string& text) const;
+
+  const abi::ModelDescriptor& model_;
+  ModuleTypes types_;
+  RuleIndex rules_;
+  std::vector<std::vector<std::uint8_t>> skip_tables_;
+  MessageSink messages_;
+
+  ModuleString string_;
+  ModuleString next_;
+  ModuleString successor_;  // backward derivation builds each successor here
+  PrependBuffer backward_out_;
+  std::deque<ModuleString> expansion_scratch_;  // one per decomposition depth
+  std::set<std::pair<int, ModuleId>> depth_warnings_;
+  int steps_done_ = 0;
+  bool begun_ = false;
+};
+
+}  // namespace sylva::derive

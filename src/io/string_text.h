@@ -1,0 +1,16 @@
+// The text form of a string: modules separated by spaces, each as its name or
+// Name(p1,p2,...), numbers printed so they read back exactly (float %.9g,
+// double %.17g, structs as {field=value,...}).
+#pragma once
+
+#include <string>
+
+#include "lstring/module_string.h"
+#include "lstring/module_types.h"
+
+namespace sylva::io {
+
+// The whole string on one line, ending with a newline.
+std::string format_string(const ModuleString& string, const ModuleTypes& types);
+
+}  // namespace sylva::io

@@ -1,0 +1,299 @@
+#include "lang/cpp_generator.h"
+
+#include <unordered_map>
+
+namespace sylva::lang {
+namespace {
+
+const char* kind_name(abi::RuleKind kind) {
+  switch (kind) {
+    case abi::RuleKind::Production: return "::sylva::abi::RuleKind::Production";
+    case abi::RuleKind::Decomposition: return "::sylva::abi::RuleKind::Decomposition";
+    case abi::RuleKind::Interpretation: return "::sylva::abi::RuleKind::Interpretation";
+  }
+  return "";
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string join_types(const std::vector<std::string>& types) {
+  std::string list;
+  for (std::size_t k = 0; k < types.size(); ++k) list += (k ? ", " : "") + types[k];
+  return list;
+}
+
+// Writes C++ whose lines map back to the model: tokens are placed on the line
+// (and column, where possible) they came from, with line markers in between.
+class MappedWriter {
+ public:
+  explicit MappedWriter(const std::vector<std::string>& files) : files_(files) {}
+
+  void token(const Token& t) {
+    if (t.kind == TokenKind::Verbatim) {
+      move_to(t.file, t.line);
+      text_ += t.text;
+      line_ += count_lines(t.text);
+      at_line_start_ = true;
+      return;
+    }
+    move_to(t.file, t.line);
+    if (at_line_start_) {
+      text_.append(static_cast<std::size_t>(t.column > 1 ? t.column - 1 : 0), ' ');
+    } else if (t.space_before || needs_space(t)) {
+      text_ += ' ';
+    }
+    text_ += t.text;
+    last_char_ = text_.back();
+    at_line_start_ = false;
+  }
+
+  void tokens(const Code& code) {
+    for (const Token& t : code) token(t);
+  }
+
+  // Generated text on the current line, attributed to the current position.
+  void inline_text(const std::string& s) {
+    if (!at_line_start_) text_ += ' ';
+    text_ += s;
+    last_char_ = ' ';
+    at_line_start_ = false;
+  }
+
+  // Generated text attributed to `at` (errors in it point there).
+  void at(const Token& where, const std::string& s) {
+    move_to(where.file, where.line);
+    inline_text(s);
+  }
+
+  // Generated lines not attributed to the model.
+  void block(const std::string& s) {
+    if (!at_line_start_) text_ += '\n';
+    text_ += s;
+    if (!s.empty() && s.back() != '\n') text_ += '\n';
+    file_ = -1;
+    at_line_start_ = true;
+  }
+
+  std::string take() { return std::move(text_); }
+
+ private:
+  static int count_lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+  }
+
+  bool needs_space(const Token& t) const {
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    return word(last_char_) && word(t.text[0]);
+  }
+
+  void move_to(int file, int line) {
+    if (file != file_ || line < line_ || line > line_ + 8) {
+      if (!at_line_start_) text_ += '\n';
+      text_ += "# " + std::to_string(line) + " " + quoted(files_[file]) + "\n";
+      file_ = file;
+      line_ = line;
+      at_line_start_ = true;
+      return;
+    }
+    while (line_ < line) {
+      text_ += '\n';
+      ++line_;
+      at_line_start_ = true;
+    }
+  }
+
+  const std::vector<std::string>& files_;
+  std::string text_;
+  int file_ = -1;
+  int line_ = 0;
+  bool at_line_start_ = true;
+  char last_char_ = ' ';
+};
+
+class CppGenerator {
+ public:
+  explicit CppGenerator(const Model& model) : model_(model), out_(model.files) {
+    for (std::size_t k = 0; k < model.modules.size(); ++k) module_id_[model.modules[k].name] = static_cast<int>(k);
+  }
+
+  std::string generate() {
+    out_.block("// Generated from " + model_.main_file + " by the Sylva L+C translator.");
+    for (const Item& item : model_.items) std::visit([this](const auto& x) { emit(x); }, item);
+    emit_tables();
+    return out_.take();
+  }
+
+ private:
+  const ModuleDecl& module(const std::string& name) const { return model_.modules[module_id_.at(name)]; }
+
+  void emit(const Code& code) { out_.tokens(code); }
+
+  void emit(const ModuleDecl& decl) {
+    // Checks the parameter types where the module is declared, so a bad type
+    // is reported on that line.
+    for (const std::string& type : decl.param_types)
+      out_.at(decl.at, "static_assert(::std::is_trivially_copyable_v<" + type + ">, " +
+                           quoted("module parameters must be trivially copyable (module " + decl.name + ")") + ");");
+  }
+
+  void emit(const StructFields& s) {
+    std::string text = "inline void sylva_format_value(const " + s.name + "& v, ::sylva::abi::TextSink* out) {";
+    for (std::size_t k = 0; k < s.fields.size(); ++k) {
+      text += " out->write(" + quoted((k ? "," : "{") + s.fields[k] + "=") + "); ::sylva::rt::format_value(v." +
+              s.fields[k] + ", out);";
+    }
+    text += " out->write(\"}\"); }";
+    out_.at(s.at, text);
+  }
+
+  void emit(const Setting& setting) {
+    std::string name;
+    switch (setting.kind) {
+      case Setting::kDerivationLength: name = "sylva_derivation_length"; break;
+      case Setting::kDecompositionDepth: name = "sylva_decomposition_depth"; break;
+      case Setting::kInterpretationDepth: name = "sylva_interpretation_depth"; break;
+      case Setting::kRing: name = "sylva_ring"; break;
+    }
+    settings_[setting.kind] = name;
+    out_.at(setting.at, "static int " + name + "() { return static_cast<int>(");
+    out_.tokens(setting.expression);
+    out_.inline_text("); }");
+  }
+
+  void emit(const Axiom& axiom) {
+    has_axiom_ = true;
+    out_.at(axiom.at, "static void sylva_axiom(::sylva::abi::ModuleBuffer* sylva_out) {");
+    emit_calls(axiom.modules, "sylva_out");
+    out_.inline_text("}");
+  }
+
+  void emit(const ControlStatement& statement) {
+    static const char* names[] = {"sylva_start", "sylva_start_each", "sylva_end_each", "sylva_end"};
+    control_[statement.kind] = names[statement.kind];
+    out_.at(statement.at, std::string("static void ") + names[statement.kind] + "()");
+    emit_body(statement.body);
+  }
+
+  void emit(const Rule& rule) {
+    int index = static_cast<int>(rules_.size());
+    rules_.push_back(&rule);
+    std::string text = "static void sylva_rule_" + std::to_string(index) +
+                       "(::sylva::abi::RuleCall* sylva_call, const unsigned char* const* sylva_params) {";
+    int slot = 0;
+    for (const auto& part : rule.parts) {
+      for (const PatternModule& m : part) {
+        const ModuleDecl& decl = module(m.name);
+        std::string types = join_types(decl.param_types);
+        for (std::size_t k = 0; k < m.formals.size(); ++k) {
+          text += " " + decl.param_types[k] + " " + m.formals[k] + " = ::sylva::rt::param<" + std::to_string(k) +
+                  ", " + types + ">(sylva_params[" + std::to_string(slot) + "]); (void)" + m.formals[k] + ";";
+        }
+        ++slot;
+      }
+    }
+    out_.at(rule.at, text);
+    emit_body(rule.body);
+    out_.inline_text("}");
+  }
+
+  void emit_body(const Body& body) {
+    for (const BodyPart& part : body) {
+      if (part.kind == BodyPart::kCode) {
+        out_.tokens(part.code);
+        continue;
+      }
+      out_.at(part.at, "{");
+      emit_calls(part.modules, "sylva_call->out");
+      out_.inline_text(part.kind == BodyPart::kProduce ? "sylva_call->produced = true; return; }" : "}");
+    }
+  }
+
+  void emit_calls(const std::vector<ModuleCall>& calls, const std::string& target) {
+    for (const ModuleCall& call : calls) {
+      const ModuleDecl& decl = module(call.name);
+      out_.at(call.at, "::sylva::rt::emit<" + join_types(decl.param_types) + ">(" + target + ", " +
+                           std::to_string(module_id_.at(call.name)));
+      for (const Code& arg : call.args) {
+        out_.inline_text(",");
+        out_.tokens(arg);
+      }
+      out_.inline_text(");");
+    }
+  }
+
+  void emit_tables() {
+    std::string t;
+    t += "namespace {\n";
+    t += "const ::sylva::abi::ModuleType sylva_modules[] = {\n";
+    for (const ModuleDecl& m : model_.modules) {
+      t += "  ::sylva::rt::module_type<" + join_types(m.param_types) + ">(" + quoted(m.name) + "),\n";
+    }
+    t += "};\n";
+    for (std::size_t k = 0; k < model_.filters.size(); ++k) {
+      t += "const ::sylva::abi::ModuleId sylva_filter_ids_" + std::to_string(k) + "[] = {";
+      for (const std::string& name : model_.filters[k].names) t += std::to_string(module_id_.at(name)) + ",";
+      t += "};\n";
+    }
+    t += "const ::sylva::abi::ContextFilter sylva_filters[] = {\n";
+    for (std::size_t k = 0; k < model_.filters.size(); ++k) {
+      t += "  {" + std::string(model_.filters[k].consider ? "true" : "false") + ", sylva_filter_ids_" +
+           std::to_string(k) + ", " + std::to_string(model_.filters[k].names.size()) + "},\n";
+    }
+    t += "  {false, nullptr, 0}\n};\n";
+    for (std::size_t r = 0; r < rules_.size(); ++r) {
+      t += "const ::sylva::abi::ModuleId sylva_pattern_" + std::to_string(r) + "[] = {";
+      for (const auto& part : rules_[r]->parts)
+        for (const PatternModule& m : part) t += std::to_string(module_id_.at(m.name)) + ",";
+      t += "};\n";
+    }
+    t += "const ::sylva::abi::Rule sylva_rules[] = {\n";
+    for (std::size_t r = 0; r < rules_.size(); ++r) {
+      const Rule& rule = *rules_[r];
+      t += "  {" + std::string(kind_name(rule.kind)) + ", " + std::to_string(rule.group) + ", " +
+           std::to_string(rule.filter) + ", sylva_pattern_" + std::to_string(r) + ", {";
+      for (const auto& part : rule.parts) t += std::to_string(part.size()) + ",";
+      t += "}, &sylva_rule_" + std::to_string(r) + ", " + quoted(model_.files[rule.at.file]) + ", " +
+           std::to_string(rule.at.line) + "},\n";
+    }
+    t += "  {}\n};\n";
+    t += "}  // namespace\n\n";
+    auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
+    t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";
+    t += "  static const ::sylva::abi::ModelDescriptor descriptor = {\n";
+    t += "    ::sylva::abi::kAbiVersion, " + quoted(model_.main_file) + ",\n";
+    t += "    sylva_modules, " + std::to_string(model_.modules.size()) + ", " +
+         std::to_string(predefined_modules().size()) + ",\n";
+    t += "    sylva_rules, " + std::to_string(rules_.size()) + ",\n";
+    t += "    sylva_filters, " + std::to_string(model_.filters.size()) + ",\n";
+    t += "    &::sylva::rt::control,\n";
+    t += "    " + std::string(has_axiom_ ? "&sylva_axiom" : "nullptr") + ",\n";
+    t += "    " + fn(settings_[Setting::kDerivationLength]) + ", " + fn(settings_[Setting::kDecompositionDepth]) +
+         ", " + fn(settings_[Setting::kInterpretationDepth]) + ", " + fn(settings_[Setting::kRing]) + ",\n";
+    t += "    " + fn(control_[0]) + ", " + fn(control_[1]) + ", " + fn(control_[2]) + ", " + fn(control_[3]) + ",\n";
+    t += "  };\n  return &descriptor;\n}\n";
+    out_.block(t);
+  }
+
+  const Model& model_;
+  MappedWriter out_;
+  std::unordered_map<std::string, int> module_id_;
+  std::vector<const Rule*> rules_;
+  std::string settings_[4];
+  std::string control_[4];
+  bool has_axiom_ = false;
+};
+
+}  // namespace
+
+std::string generate_cpp(const Model& model) { return CppGenerator(model).generate(); }
+
+}  // namespace sylva::lang

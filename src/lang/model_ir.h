@@ -1,0 +1,106 @@
+// The Model IR: what a front end (L+C or cpfg) makes of a model, and what the
+// C++ generator turns into a compiled model.
+//
+// A model is a sequence of items in source order. C++ the front end does not
+// interpret is carried as Code (tokens with their positions) so that errors
+// from the C++ compiler point at the user's file.
+#pragma once
+
+#include <array>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "lang/token.h"
+#include "sylva/abi.h"
+
+namespace sylva::lang {
+
+// A run of C++ tokens kept with their source positions.
+using Code = std::vector<Token>;
+
+struct ModuleDecl {
+  std::string name;
+  std::vector<std::string> param_types;  // as written: "float", "CellData"
+  Token at;
+};
+
+// `Name(arg, ...)` in an axiom or a produce statement.
+struct ModuleCall {
+  std::string name;
+  std::vector<Code> args;
+  Token at;
+};
+
+// One module of a predecessor pattern, with the names bound to its parameters.
+struct PatternModule {
+  std::string name;
+  std::vector<std::string> formals;
+  Token at;
+};
+
+// A body is C++ with produce statements cut out of it.
+struct BodyPart {
+  enum Kind { kCode, kProduce, kNProduce } kind = kCode;
+  Code code;                        // kCode
+  std::vector<ModuleCall> modules;  // kProduce, kNProduce
+  Token at;
+};
+using Body = std::vector<BodyPart>;
+
+struct Rule {
+  abi::RuleKind kind = abi::RuleKind::Production;
+  int group = 0;
+  int filter = -1;
+  std::array<std::vector<PatternModule>, abi::kPatternParts> parts;
+  Body body;
+  Token at;
+};
+
+struct Axiom {
+  std::vector<ModuleCall> modules;
+  Token at;
+};
+
+// derivation length:, maximum depth:, ring L-system: — an expression
+// evaluated once the model has started.
+struct Setting {
+  enum Kind { kDerivationLength, kDecompositionDepth, kInterpretationDepth, kRing } kind;
+  Code expression;
+  Token at;
+};
+
+struct ControlStatement {
+  enum Kind { kStart, kStartEach, kEndEach, kEnd } kind;
+  Body body;
+  Token at;
+};
+
+struct ContextFilter {
+  bool consider = false;
+  std::vector<std::string> names;
+  Token at;
+};
+
+// A struct of the model, so module parameters of that type print field by field.
+struct StructFields {
+  std::string name;
+  std::vector<std::string> fields;
+  Token at;
+};
+
+using Item = std::variant<Code, ModuleDecl, Rule, Axiom, Setting, ControlStatement, StructFields>;
+
+struct Model {
+  std::vector<std::string> files;  // file names referred to by tokens
+  std::string main_file;
+  std::vector<Item> items;
+  std::vector<ContextFilter> filters;  // referred to by Rule::filter
+  // Modules the generator must know: the predefined ones, then the model's.
+  std::vector<ModuleDecl> modules;
+};
+
+// The predefined modules of lpfgall.h, in id order.
+const std::vector<ModuleDecl>& predefined_modules();
+
+}  // namespace sylva::lang

@@ -1,0 +1,107 @@
+// The L-system string: modules packed one after another as
+// [id][parameters][id] (see sylva/abi.h), so it can be walked both ways with
+// nothing but the table of module sizes.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+
+#include "lstring/module_types.h"
+#include "sylva/abi.h"
+
+namespace sylva {
+
+// Reading an encoded string.
+inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) {
+  ModuleId id;
+  std::memcpy(&id, data + offset, sizeof id);
+  return id;
+}
+// The id of the module that ends at `offset`.
+inline ModuleId module_id_before(const unsigned char* data, std::size_t offset) {
+  return module_id_at(data, offset - sizeof(ModuleId));
+}
+inline const unsigned char* module_params(const unsigned char* data, std::size_t offset) {
+  return data + offset + sizeof(ModuleId);
+}
+
+// A read-only range of a string: modules between `begin` and `end` (byte offsets).
+struct StringView {
+  const unsigned char* data = nullptr;
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  const std::uint32_t* sizes = nullptr;  // encoded size by module id
+
+  ModuleId id_at(std::size_t offset) const { return module_id_at(data, offset); }
+  std::size_t next(std::size_t offset) const { return offset + sizes[id_at(offset)]; }
+  std::size_t previous(std::size_t offset) const { return offset - sizes[module_id_before(data, offset)]; }
+};
+
+// An owned, growable string of modules.
+class ModuleString {
+ public:
+  ModuleString();
+  ~ModuleString();
+  ModuleString(ModuleString&& other) noexcept;
+  ModuleString& operator=(ModuleString&& other) noexcept;
+  ModuleString(const ModuleString&) = delete;
+  ModuleString& operator=(const ModuleString&) = delete;
+
+  const unsigned char* data() const { return buffer_.data; }
+  std::size_t size_bytes() const { return buffer_.size; }
+  bool empty() const { return buffer_.size == 0; }
+  std::size_t capacity_bytes() const { return buffer_.capacity; }
+
+  // Where compiled models append modules.
+  abi::ModuleBuffer* buffer() { return &buffer_; }
+
+  void clear() { buffer_.size = 0; }
+  void truncate(std::size_t size) { buffer_.size = size; }
+  void reserve(std::size_t bytes);
+  void append(const unsigned char* bytes, std::size_t n) {
+    buffer_.reserve_more(n);
+    std::memcpy(buffer_.data + buffer_.size, bytes, n);
+    buffer_.size += n;
+  }
+  void append_module(ModuleId id, const void* params, std::size_t param_size);
+  // Takes the bytes of a finished buffer (used by backward derivation).
+  void assign(const unsigned char* bytes, std::size_t n);
+
+  StringView view(const ModuleTypes& types) const {
+    return StringView{buffer_.data, 0, buffer_.size, types.encoded_sizes()};
+  }
+  std::size_t count_modules(const ModuleTypes& types) const;
+
+ private:
+  abi::ModuleBuffer buffer_;
+};
+
+// A buffer filled from its end toward its start: backward derivation builds
+// the new string this way, so the part already built is contiguous and can be
+// read as new right context.
+class PrependBuffer {
+ public:
+  PrependBuffer() = default;
+  ~PrependBuffer();
+  PrependBuffer(const PrependBuffer&) = delete;
+  PrependBuffer& operator=(const PrependBuffer&) = delete;
+
+  void clear() { begin_ = capacity_; }
+  void prepend(const unsigned char* bytes, std::size_t n) {
+    if (n > begin_) grow(n);
+    begin_ -= n;
+    std::memcpy(data_ + begin_, bytes, n);
+  }
+  const unsigned char* data() const { return data_; }
+  std::size_t begin() const { return begin_; }
+  std::size_t end() const { return capacity_; }
+  std::size_t size_bytes() const { return capacity_ - begin_; }
+
+ private:
+  void grow(std::size_t needed);
+  unsigned char* data_ = nullptr;
+  std::size_t begin_ = 0;
+  std::size_t capacity_ = 0;
+};
+
+}  // namespace sylva

@@ -1,0 +1,47 @@
+// The registry of module types: names, parameter sizes and printers, indexed
+// by module id. It comes from a compiled model, or is built by hand in tests.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "sylva/abi.h"
+
+namespace sylva {
+
+using abi::ModuleId;
+
+class ModuleTypes {
+ public:
+  struct Type {
+    std::string name;
+    std::uint32_t param_size = 0;
+    void (*format_params)(const unsigned char*, abi::TextSink*) = nullptr;
+  };
+
+  ModuleTypes() = default;
+  explicit ModuleTypes(std::vector<Type> types);
+  static ModuleTypes from_model(const abi::ModelDescriptor& model);
+
+  std::size_t size() const { return types_.size(); }
+  const Type& operator[](ModuleId id) const { return types_[id]; }
+  const std::string& name(ModuleId id) const { return types_[id].name; }
+  // Bytes a module of this type takes in a string: parameters plus two ids.
+  std::uint32_t encoded_size(ModuleId id) const { return encoded_sizes_[id]; }
+  const std::uint32_t* encoded_sizes() const { return encoded_sizes_.data(); }
+  std::optional<ModuleId> find(std::string_view name) const;
+
+  // "p1,p2" for a module's parameter block.
+  void format_params(ModuleId id, const unsigned char* params, std::string& out) const;
+
+ private:
+  std::vector<Type> types_;
+  std::vector<std::uint32_t> encoded_sizes_;
+  std::unordered_map<std::string, ModuleId> by_name_;
+};
+
+}  // namespace sylva

@@ -1,0 +1,127 @@
+// The binary interface between the engine and a compiled model.
+//
+// A compiled model is a shared library exporting one C function,
+// `sylva_model_v1`, that returns a ModelDescriptor: its module types, its
+// rules with their patterns and body functions, and its control statements.
+// The engine owns the strings; the model only reads parameter blocks and
+// appends modules to a ModuleBuffer. Everything here is plain data so the
+// header stays cheap to compile into every model.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+namespace sylva::abi {
+
+inline constexpr std::uint32_t kAbiVersion = 1;
+
+using ModuleId = std::uint16_t;
+
+// A module is stored as [id][parameters][id]: the trailing id lets the string
+// be walked backward. Parameters are packed in declaration order without
+// padding and read with memcpy.
+inline constexpr std::size_t kModuleOverhead = 2 * sizeof(ModuleId);
+
+// A growable byte buffer of encoded modules. The engine allocates it and
+// supplies `grow`, so a model never calls an allocator of its own.
+struct ModuleBuffer {
+  unsigned char* data = nullptr;
+  std::size_t size = 0;
+  std::size_t capacity = 0;
+  void (*grow)(ModuleBuffer* self, std::size_t min_capacity) = nullptr;
+
+  void reserve_more(std::size_t bytes) {
+    if (size + bytes > capacity) grow(this, size + bytes);
+  }
+  void put_id(ModuleId id) {
+    std::memcpy(data + size, &id, sizeof id);
+    size += sizeof id;
+  }
+};
+
+// Text sink used by the per-module parameter formatters.
+struct TextSink {
+  void* self;
+  void (*append)(void* self, const char* text, std::size_t length);
+  void write(const char* text, std::size_t length) { append(self, text, length); }
+  void write(const char* text) { append(self, text, std::strlen(text)); }
+};
+
+struct ModuleType {
+  const char* name;
+  std::uint32_t param_size;
+  // Appends the parameters as "p1,p2,..." (no parentheses).
+  void (*format_params)(const unsigned char* params, TextSink* out);
+};
+
+enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2 };
+
+// Pattern parts in the order the engine hands their parameters to a body.
+enum PatternPart : int { kNewLeft = 0, kLeft, kStrict, kRight, kNewRight, kPatternParts };
+
+// What a body sees of the derivation while it runs.
+struct RuleCall {
+  ModuleBuffer* out;   // the successor is appended here
+  bool produced;       // set by `produce`
+};
+
+struct Rule {
+  RuleKind kind;
+  int group;
+  int filter;  // index into ModelDescriptor::filters, or -1: every module counts
+  const ModuleId* pattern;  // all parts concatenated in PatternPart order
+  std::uint16_t part_length[kPatternParts];
+  // params[i] points at the parameter block of the i-th pattern module.
+  void (*body)(RuleCall* call, const unsigned char* const* params);
+  const char* file;
+  int line;
+};
+
+// An ignore: or consider: statement in force for some rules.
+struct ContextFilter {
+  bool consider;  // true: only `ids` count; false: `ids` are skipped
+  const ModuleId* ids;
+  std::uint32_t count;
+};
+
+// State shared by the model's predefined functions (Forward(), StepNo(), ran()
+// ...) and the engine. It lives in the model; the engine reads and writes it.
+struct ControlState {
+  bool forward = true;
+  bool stop_requested = false;
+  int step = 0;
+  int current_group = 0;
+  int next_group = 0;
+  std::uint64_t rand48 = 0x1234ABCD330EULL;  // drand48's state after srand48(0)
+  // Messages (Printf, warnings) go through the engine.
+  void* host = nullptr;
+  void (*message)(void* host, const char* text) = nullptr;
+};
+
+struct ModelDescriptor {
+  std::uint32_t abi_version;
+  const char* source_file;
+  const ModuleType* modules;
+  std::uint32_t module_count;
+  std::uint32_t predefined_count;
+  const Rule* rules;
+  std::uint32_t rule_count;
+  const ContextFilter* filters;
+  std::uint32_t filter_count;
+  ControlState* control;
+  void (*axiom)(ModuleBuffer* out);
+  int (*derivation_length)();
+  int (*decomposition_depth)();   // null: the default depth, 1
+  int (*interpretation_depth)();  // null: the default depth, 1
+  int (*ring)();                  // null: not a ring L-system
+  void (*start)();
+  void (*start_each)();
+  void (*end_each)();
+  void (*end)();
+};
+
+using ModelEntryPoint = const ModelDescriptor* (*)();
+inline constexpr const char* kEntryPointName = "sylva_model_v1";
+
+}  // namespace sylva::abi

@@ -1,0 +1,178 @@
+// How compiled models read, write and print modules.
+//
+// The translator turns `produce A(x) B;` into calls of `emit<...>` and the
+// formal parameters of a predecessor into `param<I, ...>` reads; the module
+// table it generates uses `format_params<...>`. Parameters are packed in
+// declaration order without padding (see sylva/abi.h).
+#pragma once
+
+#include <sylva/abi.h>
+#include <sylva/predefined_ids.h>
+#include <sylva/runtime/types.h>
+#include <sylva/runtime/vectors.h>
+
+#include <cstdio>
+#include <cstring>
+#include <type_traits>
+
+namespace sylva::rt {
+
+template <class... T>
+inline constexpr std::size_t params_size = (std::size_t{0} + ... + sizeof(T));
+
+template <std::size_t I, class... T>
+struct ParamAt;
+template <class First, class... Rest>
+struct ParamAt<0, First, Rest...> {
+  using type = First;
+  static constexpr std::size_t offset = 0;
+};
+template <std::size_t I, class First, class... Rest>
+struct ParamAt<I, First, Rest...> {
+  using type = typename ParamAt<I - 1, Rest...>::type;
+  static constexpr std::size_t offset = sizeof(First) + ParamAt<I - 1, Rest...>::offset;
+};
+
+// The I-th parameter of a module whose parameter types are T...
+template <std::size_t I, class... T>
+inline typename ParamAt<I, T...>::type param(const unsigned char* params) {
+  typename ParamAt<I, T...>::type value;
+  std::memcpy(static_cast<void*>(&value), params + ParamAt<I, T...>::offset, sizeof value);
+  return value;
+}
+
+template <class T>
+inline void put_param(unsigned char*& at, const T& value) {
+  std::memcpy(at, static_cast<const void*>(&value), sizeof value);
+  at += sizeof value;
+}
+
+// Appends one module. Arguments convert to the declared parameter types as
+// they would in a function call.
+template <class... T>
+inline void emit(abi::ModuleBuffer* out, abi::ModuleId id, std::type_identity_t<T>... values) {
+  constexpr std::size_t bytes = params_size<T...> + abi::kModuleOverhead;
+  out->reserve_more(bytes);
+  unsigned char* at = out->data + out->size;
+  std::memcpy(at, &id, sizeof id);
+  at += sizeof id;
+  (put_param<T>(at, values), ...);
+  std::memcpy(at, &id, sizeof id);
+  out->size += bytes;
+}
+
+// ---- Printing parameters so that they read back exactly -------------------
+
+inline void format_number(abi::TextSink* out, const char* fmt, double v) {
+  char buf[40];
+  int n = std::snprintf(buf, sizeof buf, fmt, v);
+  out->write(buf, static_cast<std::size_t>(n));
+}
+
+template <class T>
+void format_value(const T& v, abi::TextSink* out);
+
+template <class S>
+inline void format_vector(const S* xs, int n, abi::TextSink* out) {
+  out->write("(", 1);
+  for (int i = 0; i < n; ++i) {
+    if (i) out->write(",", 1);
+    format_value(xs[i], out);
+  }
+  out->write(")", 1);
+}
+
+template <class T>
+void format_value(const T& v, abi::TextSink* out) {
+  if constexpr (std::is_same_v<T, float>) {
+    format_number(out, "%.9g", v);
+  } else if constexpr (std::is_same_v<T, double>) {
+    format_number(out, "%.17g", v);
+  } else if constexpr (std::is_same_v<T, long double>) {
+    char buf[64];
+    int n = std::snprintf(buf, sizeof buf, "%.21Lg", v);
+    out->write(buf, static_cast<std::size_t>(n));
+  } else if constexpr (std::is_same_v<T, bool>) {
+    out->write(v ? "1" : "0", 1);
+  } else if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {
+    char buf[32];
+    int n = std::is_signed_v<T>
+                ? std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v))
+                : std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(v));
+    out->write(buf, static_cast<std::size_t>(n));
+  } else if constexpr (std::is_same_v<T, Vec2<float>> || std::is_same_v<T, Vec2<double>>) {
+    format_vector(&v.x, 2, out);
+  } else if constexpr (std::is_same_v<T, Vec3<float>> || std::is_same_v<T, Vec3<double>>) {
+    format_vector(&v.x, 3, out);
+  } else if constexpr (std::is_same_v<T, const char*> || std::is_same_v<T, char*>) {
+    out->write("\"", 1);
+    for (const char* c = v ? v : ""; *c; ++c) {
+      if (*c == '"' || *c == '\\') out->write("\\", 1);
+      out->write(c, 1);
+    }
+    out->write("\"", 1);
+  } else if constexpr (std::is_array_v<T>) {
+    out->write("[", 1);
+    for (std::size_t i = 0; i < std::extent_v<T>; ++i) {
+      if (i) out->write(",", 1);
+      format_value(v[i], out);
+    }
+    out->write("]", 1);
+  } else if constexpr (requires { sylva_format_value(v, out); }) {
+    // Structs of the model: the translator writes these overloads.
+    sylva_format_value(v, out);
+  } else {
+    // A type nothing knows how to print: its bytes, so it still reads back.
+    static const char digits[] = "0123456789abcdef";
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&v);
+    out->write("#", 1);
+    for (std::size_t i = 0; i < sizeof v; ++i) {
+      char pair[2] = {digits[bytes[i] >> 4], digits[bytes[i] & 15]};
+      out->write(pair, 2);
+    }
+  }
+}
+
+template <class... T>
+void format_params(const unsigned char* params, abi::TextSink* out) {
+  bool first = true;
+  auto one = [&](auto tag, const unsigned char*& at) {
+    using P = typename decltype(tag)::type;
+    P value;
+    std::memcpy(static_cast<void*>(&value), at, sizeof value);
+    at += sizeof value;
+    if (!first) out->write(",", 1);
+    first = false;
+    format_value(value, out);
+  };
+  const unsigned char* at = params;
+  (one(std::type_identity<T>{}, at), ...);
+  (void)at;
+}
+
+template <class... T>
+constexpr abi::ModuleType module_type(const char* name) {
+  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>};
+}
+
+}  // namespace sylva::rt
+
+inline void sylva_format_value(const EA20Array& a, sylva::abi::TextSink* out) {
+  sylva::rt::format_value(a.v, out);
+}
+inline void sylva_format_value(const SurfaceObj& s, sylva::abi::TextSink* out) {
+  sylva::rt::format_value(s.points, out);
+}
+inline void sylva_format_value(const MouseStatus& m, sylva::abi::TextSink* out) {
+  using sylva::rt::format_value;
+  out->write("{viewNum=");   format_value(m.viewNum, out);
+  out->write(",viewX=");     format_value(m.viewX, out);
+  out->write(",viewY=");     format_value(m.viewY, out);
+  out->write(",atFront=");   format_value(m.atFront, out);
+  out->write(",atRear=");    format_value(m.atRear, out);
+  out->write(",atMiddle=");  format_value(m.atMiddle, out);
+  out->write(",lbDown=");    format_value(m.lbDown, out);
+  out->write(",lbPushed=");  format_value(m.lbPushed, out);
+  out->write(",lbReleased="); format_value(m.lbReleased, out);
+  out->write("}");
+}
