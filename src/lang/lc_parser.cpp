@@ -283,6 +283,8 @@ class LcParser {
         continue;
       }
       if (tok.is_punct(";") && !parenthesized) break;
+      // lpfg accepts a produce statement that runs into the closing brace.
+      if (tok.is_punct("}") && !parenthesized && !calls.empty()) return calls;
       ModuleCall call;
       call.at = tok;
       if (tok.is_punct("[") || tok.is_punct("]")) {

@@ -1,0 +1,50 @@
+#include "test_support.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "api/simulation.h"
+#include "io/string_text.h"
+
+namespace sylva::test {
+namespace fs = std::filesystem;
+
+std::string data_path(const std::string& relative) { return std::string(SYLVA_TEST_DATA_DIR) + "/" + relative; }
+std::string example_path(const std::string& relative) { return std::string(SYLVA_EXAMPLES_DIR) + "/" + relative; }
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string derive_string(const std::string& model, int steps) {
+  build::BuildOptions options;
+  options.cache_dir = SYLVA_TEST_CACHE_DIR;
+  Simulation simulation(model, options);
+  simulation.derivation().run(steps);
+  std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  return text;
+}
+
+ProcessResult run_sylva(const std::vector<std::string>& args, const std::string& working_dir) {
+  std::vector<std::string> argv = {"/usr/bin/env", "-C", working_dir,
+                                   std::string("SYLVA_CACHE_DIR=") + SYLVA_TEST_CACHE_DIR, SYLVA_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_process(argv);
+}
+
+std::string make_temp_dir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("sylva-test-" + name + "-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+}  // namespace sylva::test
