@@ -42,10 +42,15 @@ std::size_t skip_branch_backward(const StringView& s, std::size_t eb) {
 bool match_right_context(const StringView& s, std::size_t pos, const ModuleId* pattern, int n, SkipTable skipped,
                          const unsigned char** params) {
   std::size_t at = pos;
+  bool wrapped = false;
   for (int k = 0; k < n; ++k) {
     const ModuleId want = pattern[k];
     while (true) {
-      if (at >= s.end) return false;
+      if (at >= s.end) {
+        if (!s.ring || wrapped) return false;
+        at = s.begin;
+        wrapped = true;
+      }
       const ModuleId id = s.id_at(at);
       if (id == want) {
         params[k] = module_params(s.data, at);
@@ -67,10 +72,15 @@ bool match_right_context(const StringView& s, std::size_t pos, const ModuleId* p
 bool match_left_context(const StringView& s, std::size_t pos, const ModuleId* pattern, int n, SkipTable skipped,
                         const unsigned char** params) {
   std::size_t at = pos;
+  bool wrapped = false;
   for (int k = n - 1; k >= 0; --k) {
     const ModuleId want = pattern[k];
     while (true) {
-      if (at <= s.begin) return false;
+      if (at <= s.begin) {
+        if (!s.ring || wrapped) return false;
+        at = s.end;
+        wrapped = true;
+      }
       const std::size_t start = s.previous(at);
       const ModuleId id = s.id_at(start);
       if (id == want) {

@@ -59,6 +59,12 @@ void Derivation::message(const std::string& text) const {
   else std::fputs(text.c_str(), stderr);
 }
 
+StringView Derivation::current_view() const {
+  StringView v = string_.view(types_);
+  v.ring = ring_;
+  return v;
+}
+
 SkipTable Derivation::skip_table(const abi::Rule& rule) const {
   return rule.filter < 0 ? nullptr : skip_tables_[static_cast<std::size_t>(rule.filter)].data();
 }
@@ -78,13 +84,14 @@ void Derivation::begin() {
   steps_done_ = 0;
   depth_warnings_.clear();
   if (model_.start) model_.start();
+  ring_ = model_.ring && model_.ring() != 0;
   if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
   string_.clear();
   model_.axiom(string_.buffer());
   if (rules_.has_rules(RuleKind::Decomposition)) {
     next_.clear();
     int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
-    expand(RuleKind::Decomposition, string_.view(types_), 0, depth, next_);
+    expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
     std::swap(string_, next_);
   }
   begun_ = true;
@@ -103,7 +110,7 @@ void Derivation::step() {
   if (rules_.has_rules(RuleKind::Decomposition)) {
     next_.clear();
     int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
-    expand(RuleKind::Decomposition, string_.view(types_), 0, depth, next_);
+    expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
     std::swap(string_, next_);
   }
   if (model_.end_each) model_.end_each();
@@ -127,7 +134,7 @@ ModuleString Derivation::interpreted() {
     return out;
   }
   int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
-  expand(RuleKind::Interpretation, string_.view(types_), 0, depth, out);
+  expand(RuleKind::Interpretation, current_view(), 0, depth, out);
   return out;
 }
 
@@ -200,7 +207,7 @@ bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t
 // ---- derivation steps --------------------------------------------------------
 
 void Derivation::derive_forward() {
-  const StringView src = string_.view(types_);
+  const StringView src = current_view();
   next_.clear();
   next_.reserve(string_.size_bytes() + string_.size_bytes() / 2);
   std::size_t pos = src.begin;
@@ -236,7 +243,7 @@ void Derivation::derive_forward() {
 }
 
 void Derivation::derive_backward() {
-  const StringView src = string_.view(types_);
+  const StringView src = current_view();
   backward_out_.clear();
   std::size_t pos = src.end;
   const int group = control().current_group;

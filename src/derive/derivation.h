@@ -51,6 +51,8 @@ class Derivation {
 
   abi::ControlState& control() const { return *model_.control; }
   SkipTable skip_table(const abi::Rule& rule) const;
+  // The current string as context matching sees it (a ring if the model says so).
+  StringView current_view() const;
 
   // One pass of productions over string_ into next_.
   void derive_forward();
@@ -85,6 +87,7 @@ class Derivation {
   std::set<std::pair<int, ModuleId>> depth_warnings_;
   int steps_done_ = 0;
   bool begun_ = false;
+  bool ring_ = false;
 };
 
 }  // namespace sylva::derive

@@ -31,6 +31,7 @@ struct StringView {
   std::size_t begin = 0;
   std::size_t end = 0;
   const std::uint32_t* sizes = nullptr;  // encoded size by module id
+  bool ring = false;  // context matching wraps around: first and last modules are neighbours
 
   ModuleId id_at(std::size_t offset) const { return module_id_at(data, offset); }
   std::size_t next(std::size_t offset) const { return offset + sizes[id_at(offset)]; }

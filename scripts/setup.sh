@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs what Sylva needs to build and test on Debian 12 (run as root or with sudo).
+set -euo pipefail
+
+PACKAGES=(
+  g++ cmake ninja-build       # toolchain; g++ also compiles models at run time
+  libcli11-dev                # command line
+  libgtest-dev libgmock-dev   # tests
+  libbenchmark-dev            # bench/
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
