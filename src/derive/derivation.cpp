@@ -1,5 +1,6 @@
 #include "derive/derivation.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "support/diagnostic.h"
@@ -104,6 +105,8 @@ void Derivation::step() {
   c.current_group = c.next_group;
   if (c.forward) derive_forward();
   else derive_backward();
+  if (string_.size_bytes() > 0)
+    growth_ = std::max(1.0, static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()));
   std::swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;
@@ -209,7 +212,9 @@ bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t
 void Derivation::derive_forward() {
   const StringView src = current_view();
   next_.clear();
-  next_.reserve(string_.size_bytes() + string_.size_bytes() / 2);
+  // Expect the string to grow as much as in the previous step, so it is
+  // allocated once rather than copied on every doubling.
+  next_.reserve(static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256);
   std::size_t pos = src.begin;
   std::size_t run = pos;  // modules from `run` to `pos` are copied unchanged
   auto flush = [&] {

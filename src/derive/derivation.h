@@ -88,6 +88,7 @@ class Derivation {
   int steps_done_ = 0;
   bool begun_ = false;
   bool ring_ = false;
+  double growth_ = 1.5;  // bytes after / before the last step
 };
 
 }  // namespace sylva::derive

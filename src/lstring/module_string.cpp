@@ -1,17 +1,43 @@
 #include "lstring/module_string.h"
 
+#include <sys/mman.h>
+
 #include <cstdlib>
 #include <new>
 
 namespace sylva {
 namespace {
 
-void grow_buffer(abi::ModuleBuffer* b, std::size_t min_capacity) {
-  std::size_t capacity = b->capacity ? b->capacity : 256;
-  while (capacity < min_capacity) capacity += capacity / 2 + 64;
-  void* data = std::realloc(b->data, capacity);
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+// Strings of millions of modules live in huge pages where the system allows
+// it: a fresh buffer is touched once per step, and 4 KiB pages make the page
+// faults cost as much as the derivation.
+unsigned char* allocate_bytes(std::size_t& capacity) {
+  void* data = nullptr;
+  if (capacity >= 4 * kHugePage) {
+    capacity = (capacity + kHugePage - 1) / kHugePage * kHugePage;
+    data = std::aligned_alloc(kHugePage, capacity);
+    if (data) madvise(data, capacity, MADV_HUGEPAGE);
+  } else {
+    data = std::malloc(capacity);
+  }
   if (!data) throw std::bad_alloc();
-  b->data = static_cast<unsigned char*>(data);
+  return static_cast<unsigned char*>(data);
+}
+
+std::size_t grown_capacity(std::size_t current, std::size_t needed) {
+  std::size_t capacity = current ? current : 256;
+  while (capacity < needed) capacity += capacity / 2 + 64;
+  return capacity;
+}
+
+void grow_buffer(abi::ModuleBuffer* b, std::size_t min_capacity) {
+  std::size_t capacity = grown_capacity(b->capacity, min_capacity);
+  unsigned char* data = allocate_bytes(capacity);
+  if (b->size) std::memcpy(data, b->data, b->size);
+  std::free(b->data);
+  b->data = data;
   b->capacity = capacity;
 }
 
@@ -65,10 +91,8 @@ PrependBuffer::~PrependBuffer() { std::free(data_); }
 
 void PrependBuffer::grow(std::size_t needed) {
   std::size_t used = capacity_ - begin_;
-  std::size_t capacity = capacity_ ? capacity_ : 256;
-  while (capacity < used + needed) capacity += capacity / 2 + 64;
-  auto* data = static_cast<unsigned char*>(std::malloc(capacity));
-  if (!data) throw std::bad_alloc();
+  std::size_t capacity = grown_capacity(capacity_, used + needed);
+  unsigned char* data = allocate_bytes(capacity);
   if (used) std::memcpy(data + capacity - used, data_ + begin_, used);
   std::free(data_);
   data_ = data;
