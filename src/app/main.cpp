@@ -1,6 +1,7 @@
 // sylva — the command line over the engine's public API.
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <cstdio>
 #include <iostream>
 
@@ -18,9 +19,12 @@ struct CommonOptions {
 
 void add_build_options(CLI::App& command, CommonOptions& o) {
   command.add_option("--cache-dir", o.build.cache_dir,
-                     "Where compiled models are kept (default: $SYLVA_CACHE_DIR or ~/.cache/sylva)");
-  command.add_option("--compiler", o.build.compiler, "C++ compiler for models (default: $SYLVA_CXX, $CXX or g++)");
-  command.add_option("-D,--define", o.build.defines, "Preprocessor definition NAME[=VALUE] for the model");
+                     "Where compiled models are kept (default: $SYLVA_CACHE_DIR or ~/.cache/sylva)")
+      ->type_name("DIR");
+  command.add_option("--compiler", o.build.compiler, "C++ compiler for models (default: $SYLVA_CXX, $CXX or g++)")
+      ->type_name("PROGRAM");
+  command.add_option("-D,--define", o.build.defines, "Preprocessor definition NAME[=VALUE] for the model")
+      ->type_name("NAME[=VALUE]");
   command.add_flag("-v,--verbose", o.build.verbose, "Say when a model is compiled");
 }
 
@@ -43,31 +47,49 @@ int run_command(const std::string& model, int steps, const std::string& string_p
 
 int main(int argc, char** argv) {
   CLI::App app{"Sylva: L-system plant modelling. Runs L+C models as lpfg does."};
-  app.require_subcommand(1);
+  // Usage errors read like the others: "sylva: error: ...".
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    return "sylva: error: " + CLI::FailureMessage::simple(a, e);
+  });
+  // At most one command; a missing one is reported after parsing, so that a
+  // mistyped command is named as such rather than reported as missing.
+  app.require_subcommand(0, 1);
 
   CommonOptions run_options;
   std::string run_model, string_path, interpreted_path;
   int steps = -1;
   CLI::App* run = app.add_subcommand("run", "Derive a model and write its final string");
-  run->add_option("model", run_model, "The model file (L+C, usually *.l)")->required();
+  run->add_option("model", run_model, "The model file (L+C, usually *.l)")->required()->type_name("MODEL");
   run->add_option("--steps,-n", steps, "Number of derivation steps (default: the model's derivation length)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](std::string& value) -> std::string {
+            int n = 0;
+            auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), n);
+            if (error != std::errc() || end != value.data() + value.size() || n < 0)
+              return "expected a number of steps (0 or more), not '" + value + "'";
+            return {};
+          },
+          "NONNEGATIVE"));
   run->add_option("--string,-s", string_path,
                   "Write the final string to FILE ('-' for standard output; the default when no other output is "
-                  "asked for)");
+                  "asked for)")
+      ->type_name("FILE");
   run->add_option("--interpreted", interpreted_path,
-                  "Write the final string after interpretation rules (what the turtle draws) to FILE or '-'");
+                  "Write the final string after interpretation rules (what the turtle draws) to FILE or '-'")
+      ->type_name("FILE");
   add_build_options(*run, run_options);
 
   CommonOptions translate_options;
   std::string translate_model, translate_output = "-";
   CLI::App* translate = app.add_subcommand("translate", "Print the C++ a model is translated into");
-  translate->add_option("model", translate_model, "The model file")->required();
-  translate->add_option("-o,--output", translate_output, "Write the C++ to FILE instead of standard output");
+  translate->add_option("model", translate_model, "The model file")->required()->type_name("MODEL");
+  translate->add_option("-o,--output", translate_output, "Write the C++ to FILE instead of standard output")
+      ->type_name("FILE");
   add_build_options(*translate, translate_options);
 
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run or translate)");
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }

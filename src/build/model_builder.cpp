@@ -161,8 +161,12 @@ std::string translate_model(const std::string& model_path, const BuildOptions& o
 BuiltModel build_model(const std::string& model_path, const BuildOptions& options) {
   ResolvedOptions r = resolve(options);
   std::error_code ec;
-  if (!fs::is_regular_file(model_path, ec))
-    throw ModelError(SourceLocation{model_path, 0, 0}, fs::exists(model_path, ec) ? "is not a file" : "no such file");
+  if (!fs::is_regular_file(model_path, ec)) {
+    const char* why = fs::is_directory(model_path, ec) ? "is a directory, not a model file"
+                      : fs::exists(model_path, ec)     ? "is not a regular file"
+                                                       : "no such file";
+    throw ModelError(SourceLocation{model_path, 0, 0}, why);
+  }
   fs::create_directories(r.cache_dir, ec);
   if (ec) throw ModelError("cannot create the model cache " + r.cache_dir.string() + ": " + ec.message());
 

@@ -19,13 +19,13 @@ void write_output_file(const std::string& path, const std::string& content) {
   }
   std::string tmp = path + ".tmp" + std::to_string(getpid());
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw ModelError("cannot write " + path + ": " + std::strerror(errno));
+  if (!f) throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot write the file: ") + std::strerror(errno));
   bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
   ok = (std::fclose(f) == 0) && ok;
   if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
     int error = errno;
     std::remove(tmp.c_str());
-    throw ModelError("cannot write " + path + ": " + std::strerror(error));
+    throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot write the file: ") + std::strerror(error));
   }
 }
 

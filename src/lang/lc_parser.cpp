@@ -63,7 +63,14 @@ class LcParser {
     return tok;
   }
   [[noreturn]] void fail(const Token& at, const std::string& message) const {
-    throw ModelError(stream_.location(at), message);
+    SourceLocation where = stream_.location(at);
+    // The end of the file has no column of its own: point just past the last token.
+    if (at.kind == TokenKind::End && t_.size() >= 2 && t_[t_.size() - 2].kind != TokenKind::Verbatim) {
+      const Token& last = t_[t_.size() - 2];
+      where = stream_.location(last);
+      where.column += static_cast<int>(last.text.size());
+    }
+    throw ModelError(where, message);
   }
   static std::string describe(const Token& t) {
     if (t.kind == TokenKind::End) return "end of file";
@@ -344,10 +351,12 @@ class LcParser {
     BodyPart code;
     code.kind = BodyPart::kCode;
     if (!peek().is_punct("{")) fail(peek(), "expected '{' to begin the body, found " + describe(peek()));
+    const Token& opening = peek();
     int depth = 0;
     do {
       const Token& tok = peek();
-      if (tok.kind == TokenKind::End) fail(tok, "expected '}' to end the body");
+      if (tok.kind == TokenKind::End)
+        fail(opening, "expected '}' to end the body that begins here, found end of file");
       if (tok.is_ident("produce") || tok.is_ident("nproduce")) {
         if (!produce_allowed) fail(tok, "'" + tok.text + "' is only allowed in a production or rule body");
         if (!code.code.empty()) body.push_back(std::move(code));

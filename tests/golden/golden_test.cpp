@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -33,6 +34,9 @@ struct GoldenCase {
   std::vector<std::string> written;       // files the model writes, compared after N steps
   bool needs_working_dir = false;         // reads inputs or writes files
 };
+
+// Shown by gtest (and in ctest's test names) instead of the object's bytes.
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.folder << " step " << c.steps; }
 
 std::string golden_dir() { return data_path("golden"); }
 
