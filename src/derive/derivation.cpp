@@ -144,7 +144,7 @@ ModuleString Derivation::interpreted() {
 // ---- matching one rule -------------------------------------------------------
 
 bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::size_t pos, ModuleString& out,
-                             const StringView& new_string, bool call_body, std::size_t* consumed) {
+                             const ModuleString& built, bool call_body, std::size_t* consumed) {
   const int nl = rule.part_length[abi::kNewLeft], l = rule.part_length[abi::kLeft];
   const int s = rule.part_length[abi::kStrict], r = rule.part_length[abi::kRight];
   if (rule.part_length[abi::kNewRight] > 0) return false;  // needs backward derivation
@@ -159,7 +159,11 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   SkipTable skipped = skip_table(rule);
   if (l && !match_left_context(src, pos, rule.pattern + nl, l, skipped, params + nl)) return false;
   if (r && !match_right_context(src, at, strict + s, r, skipped, params + nl + l + s)) return false;
-  if (nl && !match_left_context(new_string, new_string.end, rule.pattern, nl, skipped, params)) return false;
+  if (nl) {
+    // A view made now: an earlier rule's body may have grown (and moved) the buffer.
+    const StringView new_string = built.view(types_);
+    if (!match_left_context(new_string, new_string.end, rule.pattern, nl, skipped, params)) return false;
+  }
   if (!call_body) return true;
   const std::size_t mark = out.size_bytes();
   abi::RuleCall call{out.buffer(), false};
@@ -200,10 +204,10 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
 }
 
 bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
-                               const StringView& new_string, bool call_body, std::size_t* consumed) {
+                               const ModuleString& built, bool call_body, std::size_t* consumed) {
   return for_each_group(rules_.forward(kind, src.id_at(pos)), model_.rules, control().current_group,
                         [&](const abi::Rule& rule) {
-                          return try_forward(rule, src, pos, out, new_string, call_body, consumed);
+                          return try_forward(rule, src, pos, out, built, call_body, consumed);
                         });
 }
 
@@ -233,8 +237,7 @@ void Derivation::derive_forward() {
       pos = find_unmatched_end(src, pos);
     } else {
       std::size_t consumed = 0;
-      const StringView built{next_.data(), 0, next_.size_bytes(), types_.encoded_sizes()};
-      if (apply_forward(RuleKind::Production, src, pos, next_, built, true, &consumed)) {
+      if (apply_forward(RuleKind::Production, src, pos, next_, next_, true, &consumed)) {
         pos = consumed;
       } else {
         const std::size_t n = src.next(pos);
@@ -293,13 +296,12 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
       continue;
     }
     flush();
-    const StringView built{out.data(), 0, out.size_bytes(), types_.encoded_sizes()};
     std::size_t consumed = 0;
     if (depth >= max_depth) {
-      if (apply_forward(kind, source, pos, successor, built, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+      if (apply_forward(kind, source, pos, successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
     } else {
       successor.clear();
-      if (apply_forward(kind, source, pos, successor, built, true, &consumed)) {
+      if (apply_forward(kind, source, pos, successor, out, true, &consumed)) {
         expand(kind, successor.view(types_), depth + 1, max_depth, out);
         pos = run = consumed;
         continue;

@@ -63,10 +63,11 @@ class Derivation {
 
   // Tries the rules for the module at `pos`; on success returns true with
   // `*consumed` the offset past the strict predecessor.
+  // `built` is the new string so far, for new left context.
   bool apply_forward(abi::RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
-                     const StringView& new_string, bool call_body, std::size_t* consumed);
+                     const ModuleString& built, bool call_body, std::size_t* consumed);
   bool try_forward(const abi::Rule& rule, const StringView& src, std::size_t pos, ModuleString& out,
-                   const StringView& new_string, bool call_body, std::size_t* consumed);
+                   const ModuleString& built, bool call_body, std::size_t* consumed);
   bool try_backward(const abi::Rule& rule, const StringView& src, std::size_t end, const StringView& new_string,
                     std::size_t* consumed);
 
