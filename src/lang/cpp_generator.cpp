@@ -217,10 +217,18 @@ class CppGenerator {
     }
   }
 
+  // Room for all the modules is reserved once; then each is written in turn.
   void emit_calls(const std::vector<ModuleCall>& calls, const std::string& target) {
+    if (calls.empty()) return;
+    std::string bytes;
+    for (const ModuleCall& call : calls)
+      bytes += std::string(bytes.empty() ? "" : " + ") + "::sylva::rt::module_bytes<" +
+               join_types(module(call.name).param_types) + ">";
+    out_.inline_text("::sylva::abi::ModuleBuffer* sylva_o = " + target + "; sylva_o->reserve_more(" + bytes +
+                     "); unsigned char* sylva_at = sylva_o->data + sylva_o->size;");
     for (const ModuleCall& call : calls) {
       const ModuleDecl& decl = module(call.name);
-      out_.at(call.at, "::sylva::rt::emit<" + join_types(decl.param_types) + ">(" + target + ", " +
+      out_.at(call.at, "::sylva::rt::put_module<" + join_types(decl.param_types) + ">(sylva_at, " +
                            std::to_string(module_id_.at(call.name)));
       for (const Code& arg : call.args) {
         out_.inline_text(",");
@@ -228,14 +236,18 @@ class CppGenerator {
       }
       out_.inline_text(");");
     }
+    out_.inline_text("sylva_o->size = static_cast<::std::size_t>(sylva_at - sylva_o->data);");
   }
 
   void emit_tables() {
     std::string t;
     t += "namespace {\n";
     t += "const ::sylva::abi::ModuleType sylva_modules[] = {\n";
-    for (const ModuleDecl& m : model_.modules) {
-      t += "  ::sylva::rt::module_type<" + join_types(m.param_types) + ">(" + quoted(m.name) + "),\n";
+    const std::size_t predefined = predefined_modules().size();
+    for (std::size_t k = 0; k < model_.modules.size(); ++k) {
+      const ModuleDecl& m = model_.modules[k];
+      t += std::string("  ::sylva::rt::") + (k < predefined ? "predefined_module_type<" : "module_type<") +
+           join_types(m.param_types) + ">(" + quoted(m.name) + "),\n";
     }
     t += "};\n";
     for (std::size_t k = 0; k < model_.filters.size(); ++k) {

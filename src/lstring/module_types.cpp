@@ -10,9 +10,14 @@ ModuleTypes::ModuleTypes(std::vector<Type> types) : types_(std::move(types)) {
 }
 
 ModuleTypes ModuleTypes::from_model(const abi::ModelDescriptor& model) {
+  std::size_t predefined_count = 0;
+  const abi::ModuleType* predefined = predefined_module_types(&predefined_count);
   std::vector<Type> types;
-  for (std::uint32_t k = 0; k < model.module_count; ++k)
-    types.push_back(Type{model.modules[k].name, model.modules[k].param_size, model.modules[k].format_params});
+  for (std::uint32_t k = 0; k < model.module_count; ++k) {
+    auto format = model.modules[k].format_params;
+    if (!format && k < model.predefined_count && k < predefined_count) format = predefined[k].format_params;
+    types.push_back(Type{model.modules[k].name, model.modules[k].param_size, format});
+  }
   return ModuleTypes(std::move(types));
 }
 

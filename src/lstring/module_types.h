@@ -44,4 +44,7 @@ class ModuleTypes {
   std::unordered_map<std::string, ModuleId> by_name_;
 };
 
+// The engine's own entries for the predefined modules, in id order.
+const abi::ModuleType* predefined_module_types(std::size_t* count);
+
 }  // namespace sylva

@@ -1,6 +1,6 @@
 // How compiled models read, write and print modules.
 //
-// The translator turns `produce A(x) B;` into calls of `emit<...>` and the
+// The translator turns `produce A(x) B;` into calls of `put_module<...>` and the
 // formal parameters of a predecessor into `param<I, ...>` reads; the module
 // table it generates uses `format_params<...>`. Parameters are packed in
 // declaration order without padding (see sylva/abi.h).
@@ -47,18 +47,21 @@ inline void put_param(unsigned char*& at, const T& value) {
   at += sizeof value;
 }
 
-// Appends one module. Arguments convert to the declared parameter types as
-// they would in a function call.
+// Bytes one module with parameters T... takes in a string.
 template <class... T>
-inline void emit(abi::ModuleBuffer* out, abi::ModuleId id, std::type_identity_t<T>... values) {
-  constexpr std::size_t bytes = params_size<T...> + abi::kModuleOverhead;
-  out->reserve_more(bytes);
-  unsigned char* at = out->data + out->size;
+inline constexpr std::size_t module_bytes = params_size<T...> + abi::kModuleOverhead;
+
+// Writes one module at `at` (room for it has been reserved) and advances
+// `at`. Arguments convert to the declared parameter types as they would in a
+// function call. A produce statement reserves room for all its modules once,
+// then writes them one after another.
+template <class... T>
+inline void put_module(unsigned char*& at, abi::ModuleId id, std::type_identity_t<T>... values) {
   std::memcpy(at, &id, sizeof id);
   at += sizeof id;
   (put_param<T>(at, values), ...);
   std::memcpy(at, &id, sizeof id);
-  out->size += bytes;
+  at += sizeof id;
 }
 
 // ---- Printing parameters so that they read back exactly -------------------
@@ -153,6 +156,13 @@ void format_params(const unsigned char* params, abi::TextSink* out) {
 template <class... T>
 constexpr abi::ModuleType module_type(const char* name) {
   return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>};
+}
+
+// A predefined module's entry: the engine supplies its printer, so models do
+// not compile one for each of the predefined modules.
+template <class... T>
+constexpr abi::ModuleType predefined_module_type(const char* name) {
+  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), nullptr};
 }
 
 }  // namespace sylva::rt
