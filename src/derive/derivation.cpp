@@ -83,18 +83,12 @@ void Derivation::begin() {
   c.step = 0;
   c.current_group = c.next_group = 0;
   steps_done_ = 0;
-  depth_warnings_.clear();
   if (model_.start) model_.start();
   ring_ = model_.ring && model_.ring() != 0;
   if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
   string_.clear();
   model_.axiom(string_.buffer());
-  if (rules_.has_rules(RuleKind::Decomposition)) {
-    next_.clear();
-    int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
-    expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
-    std::swap(string_, next_);
-  }
+  decompose();
   begun_ = true;
 }
 
@@ -110,13 +104,17 @@ void Derivation::step() {
   std::swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;
-  if (rules_.has_rules(RuleKind::Decomposition)) {
-    next_.clear();
-    int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
-    expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
-    std::swap(string_, next_);
-  }
+  decompose();
   if (model_.end_each) model_.end_each();
+}
+
+void Derivation::decompose() {
+  if (!rules_.has_rules(RuleKind::Decomposition)) return;
+  depth_warnings_.clear();  // warned once per pass, as lpfg does
+  next_.clear();
+  int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
+  expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
+  std::swap(string_, next_);
 }
 
 void Derivation::finish() {
@@ -136,6 +134,7 @@ ModuleString Derivation::interpreted() {
     out.assign(string_.data(), string_.size_bytes());
     return out;
   }
+  depth_warnings_.clear();
   int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
   expand(RuleKind::Interpretation, current_view(), 0, depth, out);
   return out;

@@ -54,6 +54,8 @@ class Derivation {
   // The current string as context matching sees it (a ring if the model says so).
   StringView current_view() const;
 
+  // Decomposition of string_ in place (through next_).
+  void decompose();
   // One pass of productions over string_ into next_.
   void derive_forward();
   void derive_backward();
