@@ -7,6 +7,9 @@ PACKAGES=(
   libcli11-dev                # command line
   libgtest-dev libgmock-dev   # tests
   libbenchmark-dev            # bench/
+  pkg-config libcairo2-dev libosmesa6-dev libpng-dev   # vector drawings, offscreen OpenGL, PNG
+  libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
+  libassimp-dev poppler-utils                          # tests read meshes and PDFs back
 )
 
 missing=()

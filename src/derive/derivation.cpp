@@ -46,6 +46,15 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
     skip_tables_.push_back(std::move(skipped));
   }
+  for (std::uint32_t r = 0; r < model.rule_count; ++r) {
+    const abi::Rule& rule = model.rules[r];
+    if (rule.kind != RuleKind::Production) continue;
+    for (int k = 0; k < pattern_length(rule); ++k) {
+      ModuleId id = rule.pattern[k];
+      if (id == rt::mid::GetPos || id == rt::mid::GetHead || id == rt::mid::GetLeft || id == rt::mid::GetUp)
+        uses_query_modules_ = true;
+    }
+  }
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
 }
@@ -89,6 +98,7 @@ void Derivation::begin() {
   string_.clear();
   model_.axiom(string_.buffer());
   decompose();
+  if (uses_query_modules_ && query_pass_) query_pass_(*this);
   begun_ = true;
 }
 
@@ -105,6 +115,7 @@ void Derivation::step() {
   ++steps_done_;
   c.step = steps_done_;
   decompose();
+  if (uses_query_modules_ && query_pass_) query_pass_(*this);
   if (model_.end_each) model_.end_each();
 }
 
@@ -138,6 +149,42 @@ ModuleString Derivation::interpreted() {
   int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
   expand(RuleKind::Interpretation, current_view(), 0, depth, out);
   return out;
+}
+
+void Derivation::interpret(InterpretedModuleVisitor& visitor) {
+  const StringView src = current_view();
+  unsigned char* data = const_cast<unsigned char*>(string_.data());
+  const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
+  const int depth = has_rules && model_.interpretation_depth ? model_.interpretation_depth() : 1;
+  if (has_rules) depth_warnings_.clear();
+  while (expansion_scratch_.empty()) expansion_scratch_.emplace_back();
+  std::uint32_t index = 0;
+  std::size_t pos = src.begin;
+  while (pos < src.end) {
+    const ModuleId id = src.id_at(pos);
+    if (has_rules && !rules_.forward(RuleKind::Interpretation, id).empty()) {
+      ModuleString& successor = expansion_scratch_[0];
+      successor.clear();
+      std::size_t consumed = 0;
+      if (depth < 1) {
+        if (apply_forward(RuleKind::Interpretation, src, pos, successor, interpretation_out_, false, &consumed))
+          warn_depth_reached(RuleKind::Interpretation, id, depth);
+      } else if (apply_forward(RuleKind::Interpretation, src, pos, successor, interpretation_out_, true, &consumed)) {
+        interpretation_out_.clear();
+        expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_);
+        const StringView shown = interpretation_out_.view(types_);
+        unsigned char* shown_data = const_cast<unsigned char*>(interpretation_out_.data());
+        for (std::size_t at = shown.begin; at < shown.end; at = shown.next(at))
+          visitor.visit(shown.id_at(at), shown_data + at + sizeof(ModuleId), index, false);
+        for (std::size_t at = pos; at < consumed; at = src.next(at)) ++index;
+        pos = consumed;
+        continue;
+      }
+    }
+    visitor.visit(id, data + pos + sizeof(ModuleId), index, true);
+    ++index;
+    pos = src.next(pos);
+  }
 }
 
 // ---- matching one rule -------------------------------------------------------

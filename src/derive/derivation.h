@@ -17,6 +17,17 @@
 
 namespace sylva::derive {
 
+// Receives the string as the turtle sees it: each module after interpretation
+// rules, with the position of the string module it came from.
+class InterpretedModuleVisitor {
+ public:
+  virtual ~InterpretedModuleVisitor() = default;
+  // `in_string` is true when the module is the string's own (not produced by
+  // an interpretation rule): writes to `params` then change the string, which
+  // is how query modules (GetPos ...) receive their values.
+  virtual void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) = 0;
+};
+
 class Derivation {
  public:
   using MessageSink = std::function<void(const std::string&)>;
@@ -45,6 +56,16 @@ class Derivation {
   const ModuleTypes& types() const { return types_; }
   // The string with interpretation rules applied (what the turtle draws).
   ModuleString interpreted();
+  // The same, module by module, to a visitor.
+  void interpret(InterpretedModuleVisitor& visitor);
+
+  // Whether a production's predecessor holds a query module (GetPos, GetHead,
+  // GetLeft, GetUp): then the string is interpreted after the axiom and after
+  // every step, so those modules carry the turtle's state.
+  bool uses_query_modules() const { return uses_query_modules_; }
+  // Called after the axiom and after every step (after decomposition, before
+  // EndEach) when the model uses query modules.
+  void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
 
  private:
   struct Scratch;
@@ -91,6 +112,9 @@ class Derivation {
   int steps_done_ = 0;
   bool begun_ = false;
   bool ring_ = false;
+  bool uses_query_modules_ = false;
+  std::function<void(Derivation&)> query_pass_;
+  ModuleString interpretation_out_;
   double growth_ = 1.5;  // bytes after / before the last step
 };
 

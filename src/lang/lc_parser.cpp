@@ -134,7 +134,7 @@ class LcParser {
       return parse_setting(Setting::kRing, 5), true;
     if (w == "group" && peek(1).kind == TokenKind::Number && followed_by_colon(2)) {
       flush_code();
-      group_ = std::stoi(peek(1).text);
+      group_ = std::stoi(peek(1).text, nullptr, 0);
       i_ += 3;
       return true;
     }

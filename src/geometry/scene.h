@@ -1,0 +1,93 @@
+// The Scene: what the turtle makes of a string, and what every output reads.
+//
+// Lines, circles and spheres are kept as what they are (so vector drawings
+// draw lines and circles, and a million spheres cost little until they are
+// tessellated); everything else is triangles in one shared pool. Every
+// primitive knows the module that made it: its index in the interpreted
+// string and its module id.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/vec3.h"
+#include "sylva/abi.h"
+
+namespace sylva::geometry {
+
+struct Provenance {
+  std::uint32_t module_index = 0;  // position of the module in the string (0-based)
+  abi::ModuleId module_id = 0;
+};
+
+// A line drawn by the turtle (F, G, LineTo, ...). How it looks depends on the
+// view file's line style: pixel lines, flat polygons or cylinders.
+struct Segment {
+  Vec3 start, end;
+  Vec3 up;  // the turtle's up vector at the start: orients polygons and cylinder seams
+  float start_width = 1, end_width = 1;
+  int color = 1;
+  Provenance from;
+};
+
+// A filled circle (disc) or a circle outline of width `outline` (CircleB).
+struct Circle {
+  Vec3 center;
+  Vec3 normal;  // of the HL plane it lies in; ignored when facing_viewer
+  float radius = 1;
+  float outline = 0;  // 0: filled disc
+  bool facing_viewer = false;  // CircleFront*: always in the screen plane
+  int color = 1;
+  Provenance from;
+};
+
+struct Sphere {
+  Vec3 center;
+  float radius = 1;
+  int color = 1;
+  Provenance from;
+};
+
+struct Label {
+  Vec3 position;
+  std::string text;
+  int color = 1;
+  Provenance from;
+};
+
+// A run of triangles in the Scene's pool: a polygon, a rhombus, a surface, a
+// generalized cylinder ...
+struct TriangleGroup {
+  enum class Kind : std::uint8_t { Polygon, Rhombus, Triangle, Surface, GeneralizedCylinder, Mesh };
+  Kind kind = Kind::Polygon;
+  std::uint32_t first_index = 0;  // into Scene::indices
+  std::uint32_t index_count = 0;  // a multiple of 3
+  int color = 1;
+  Provenance from;
+};
+
+struct Scene {
+  std::vector<Segment> segments;
+  std::vector<Circle> circles;
+  std::vector<Sphere> spheres;
+  std::vector<Label> labels;
+
+  // The triangle pool: per-vertex positions and normals, and triangle indices.
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<std::uint32_t> indices;
+  std::vector<TriangleGroup> groups;
+
+  // Adds triangles (vertex indices relative to `vertices`) as one group.
+  void add_triangles(TriangleGroup::Kind kind, const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
+                     const std::vector<std::uint32_t>& triangle_indices, int color, Provenance from);
+
+  bool empty() const {
+    return segments.empty() && circles.empty() && spheres.empty() && labels.empty() && groups.empty();
+  }
+  // Everything drawn, widths and radii included.
+  Box bounds() const;
+};
+
+}  // namespace sylva::geometry

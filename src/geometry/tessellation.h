@@ -1,0 +1,45 @@
+// The whole Scene as triangles (and, for the pixel line style, lines): what
+// mesh files and the raster renderer draw. Segments become cylinders with
+// `contour_sides` sides (line style cylinder) or flat strips facing the
+// turtle's up vector (polygon); circles become discs, spheres UV spheres.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/scene.h"
+
+namespace sylva::geometry {
+
+enum class LineStyle { Pixel, Polygon, Cylinder };
+
+struct TessellationOptions {
+  LineStyle line_style = LineStyle::Cylinder;
+  int contour_sides = 8;
+};
+
+// A run of triangles (or of line vertex pairs) made by one primitive.
+struct MeshPart {
+  enum class Kind : std::uint8_t { Segment, Circle, Sphere, Polygon, Rhombus, Triangle, Surface, GeneralizedCylinder, Mesh };
+  Kind kind = Kind::Segment;
+  std::uint32_t first_index = 0;
+  std::uint32_t index_count = 0;
+  int color = 1;
+  Provenance from;
+};
+
+struct TriangleMesh {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<std::uint32_t> indices;  // triangles, 3 per
+  std::vector<MeshPart> parts;          // runs of `indices`
+  // Pixel-style segments: pairs of indices into positions.
+  std::vector<std::uint32_t> line_indices;
+  std::vector<MeshPart> line_parts;     // runs of `line_indices`
+};
+
+TriangleMesh tessellate(const Scene& scene, const TessellationOptions& options);
+
+const char* kind_name(MeshPart::Kind kind);
+
+}  // namespace sylva::geometry

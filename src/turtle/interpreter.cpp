@@ -1,0 +1,1 @@
+#include "turtle/interpreter.h"

@@ -1,0 +1,39 @@
+// The 3D turtle (LPFG manual chapter 5): interprets the string, module by
+// module after interpretation rules, into a Scene. Query modules (GetPos ...)
+// found in the string receive the turtle's state.
+#pragma once
+
+#include <string>
+
+#include "derive/derivation.h"
+#include "geometry/scene.h"
+#include "turtle/turtle_settings.h"
+
+namespace sylva::turtle {
+
+class TurtleInterpreter : public derive::InterpretedModuleVisitor {
+ public:
+  // `scene` may be null (only the turtle's state matters: query modules);
+  // `trace`, when given, receives one line per turtle command (sylva run --turtle).
+  TurtleInterpreter(const TurtleSettings& settings, const ModuleTypes& types, geometry::Scene* scene,
+                    std::string* trace = nullptr);
+  ~TurtleInterpreter() override;
+
+  void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) override;
+  // Closes what the string left open (polygons, generalized cylinders).
+  void finish();
+
+ private:
+  struct State;
+  struct Impl;
+  Impl* impl_;
+};
+
+// Interprets the derivation's current string into a Scene.
+geometry::Scene interpret_scene(derive::Derivation& derivation, const TurtleSettings& settings,
+                                std::string* trace = nullptr);
+
+// Fills the parameters of the query modules in the string (the query pass).
+void fill_query_modules(derive::Derivation& derivation, const TurtleSettings& settings);
+
+}  // namespace sylva::turtle
