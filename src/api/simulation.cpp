@@ -1,13 +1,49 @@
 #include "api/simulation.h"
 
+#include <cstdio>
+
+#include "api/input_queries.h"
+#include "turtle/interpreter.h"
+
 namespace sylva {
 
-Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options,
+Simulation::Simulation(const std::string& model_path, const SimulationOptions& options,
                        derive::Derivation::MessageSink messages) {
-  build::BuiltModel built = build::build_model(model_path, options);
+  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(options.input_files, options.build.compiler));
+  for (const std::string& warning : inputs_->warnings) {
+    if (messages) messages(warning + "\n");
+    else std::fprintf(stderr, "%s\n", warning.c_str());
+  }
+  turtle_settings_ = inputs_->turtle_settings();
+
+  build::BuildOptions build = options.build;
+  for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
+  build::BuiltModel built = build::build_model(model_path, build);
   compiled_now_ = built.compiled_now;
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);
+
+  abi::ControlState& control = *library_->descriptor().control;
+  control.inputs = inputs_.get();
+  control.input_query = &answer_input_query;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
+  derivation_->set_query_pass(
+      [this](derive::Derivation& d) { turtle::fill_query_modules(d, turtle_settings_); });
+}
+
+Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options,
+                       derive::Derivation::MessageSink messages)
+    : Simulation(model_path, SimulationOptions{options, {}}, std::move(messages)) {}
+
+Simulation::~Simulation() {
+  if (library_) {
+    abi::ControlState& control = *library_->descriptor().control;
+    control.inputs = nullptr;
+    control.input_query = nullptr;
+  }
+}
+
+geometry::Scene Simulation::scene(std::string* trace) {
+  return turtle::interpret_scene(*derivation_, turtle_settings_, trace);
 }
 
 }  // namespace sylva

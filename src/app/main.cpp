@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "api/outputs.h"
 #include "api/simulation.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
@@ -28,17 +29,38 @@ void add_build_options(CLI::App& command, CommonOptions& o) {
   command.add_flag("-v,--verbose", o.build.verbose, "Say when a model is compiled");
 }
 
-int run_command(const std::string& model, int steps, const std::string& string_path,
-                const std::string& interpreted_path, const CommonOptions& o) {
-  sylva::Simulation simulation(model, o.build);
+struct RunOptions {
+  std::string model;
+  std::vector<std::string> inputs;
+  int steps = -1;
+  std::string string_path, interpreted_path, turtle_path, frames_dir;
+  std::vector<std::string> outputs;
+  sylva::OutputOptions output;
+};
+
+int run_command(const RunOptions& r, const CommonOptions& o) {
+  // Bad output names fail before any work is done.
+  for (const std::string& path : r.outputs) sylva::check_output_path(path);
+  sylva::SimulationOptions options{o.build, r.inputs};
+  sylva::Simulation simulation(r.model, options);
   sylva::derive::Derivation& d = simulation.derivation();
-  d.run(steps);
-  if (!interpreted_path.empty()) {
-    sylva::ModuleString shown = d.interpreted();
-    sylva::io::write_output_file(interpreted_path, sylva::io::format_string(shown, d.types()));
+  if (!r.frames_dir.empty()) {
+    int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
+    if (o.build.verbose) std::fprintf(stderr, "sylva: wrote %d frames to %s\n", frames, r.frames_dir.c_str());
   }
-  if (!string_path.empty() || interpreted_path.empty())
-    sylva::io::write_output_file(string_path.empty() ? "-" : string_path,
+  d.run(r.steps);
+  if (!r.interpreted_path.empty())
+    sylva::io::write_output_file(r.interpreted_path, sylva::io::format_string(d.interpreted(), d.types()));
+  if (!r.turtle_path.empty()) {
+    std::string trace;
+    simulation.scene(&trace);
+    sylva::io::write_output_file(r.turtle_path, trace);
+  }
+  for (const std::string& path : r.outputs) sylva::write_output(path, simulation, r.output);
+  const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
+                            !r.frames_dir.empty();
+  if (!r.string_path.empty() || !other_output)
+    sylva::io::write_output_file(r.string_path.empty() ? "-" : r.string_path,
                                  sylva::io::format_string(d.string(), d.types()));
   return 0;
 }
@@ -56,11 +78,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   CommonOptions run_options;
-  std::string run_model, string_path, interpreted_path;
-  int steps = -1;
-  CLI::App* run = app.add_subcommand("run", "Derive a model and write its final string");
-  run->add_option("model", run_model, "The model file (L+C, usually *.l)")->required()->type_name("MODEL");
-  run->add_option("--steps,-n", steps, "Number of derivation steps (default: the model's derivation length)")
+  RunOptions r;
+  CLI::App* run = app.add_subcommand("run", "Derive a model and write its string, geometry, drawings or images");
+  run->add_option("model", r.model, "The model file (L+C, usually *.l)")->required()->type_name("MODEL");
+  run->add_option("inputs", r.inputs,
+                  "Input files, recognised by extension in any order as lpfg takes them: view (.v), animation "
+                  "(.a), colormap (.map), materials (.mat), contours (.con, .cset), functions (.func, .fset)")
+      ->type_name("FILE...");
+  run->add_option("--steps,-n", r.steps, "Number of derivation steps (default: the model's derivation length)")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
             int n = 0;
@@ -70,12 +95,27 @@ int main(int argc, char** argv) {
             return {};
           },
           "NONNEGATIVE"));
-  run->add_option("--string,-s", string_path,
+  run->add_option("--string,-s", r.string_path,
                   "Write the final string to FILE ('-' for standard output; the default when no other output is "
                   "asked for)")
       ->type_name("FILE");
-  run->add_option("--interpreted", interpreted_path,
+  run->add_option("--interpreted", r.interpreted_path,
                   "Write the final string after interpretation rules (what the turtle draws) to FILE or '-'")
+      ->type_name("FILE");
+  run->add_option("-o,--output", r.outputs,
+                  "Write the final state to FILE, in the format its extension names: mesh (.obj with .mtl, .ply, "
+                  ".glb), drawing (.svg, .pdf, .ps, .eps) or image (.png); repeatable")
+      ->type_name("FILE");
+  run->add_option("--width", r.output.width, "Width of images and drawings in pixels (default 800)")
+      ->check(CLI::Range(1, 16384));
+  run->add_option("--height", r.output.height, "Height of images and drawings in pixels (default 800)")
+      ->check(CLI::Range(1, 16384));
+  run->add_option("--frames", r.frames_dir,
+                  "Write one PNG per animation frame into DIR (frames from the animation file's first frame, "
+                  "last frame and step; every step without one)")
+      ->type_name("DIR");
+  run->add_option("--turtle", r.turtle_path,
+                  "Write the turtle's commands for the final string to FILE or '-', one per line")
       ->type_name("FILE");
   add_build_options(*run, run_options);
 
@@ -95,7 +135,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return run_command(run_model, steps, string_path, interpreted_path, run_options);
+    if (*run) return run_command(r, run_options);
     if (*translate) {
       sylva::io::write_output_file(translate_output,
                                    sylva::build::translate_model(translate_model, translate_options.build));

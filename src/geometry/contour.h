@@ -2,6 +2,7 @@
 // writes them (.con, .cset files, VLAB Tools manual).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,18 @@
 namespace sylva::geometry {
 
 struct Contour {
+  // How the points define the curve: control points of a uniform cubic
+  // B-spline (the contour editor; a point of multiplicity m is repeated m
+  // times), the vertices of a polygon, or an exact unit circle (points unused).
+  enum class Curve : std::uint8_t { BSpline, Polygon, Circle };
+
   std::string name;
   std::vector<Vec3> points;  // in the contour's plane (x: left, y: up), as given
   bool closed = true;
-  // `sides` points spaced evenly along the contour (a B-spline through the
-  // control points when the file says so; the polygon otherwise).
+  Curve curve = Curve::BSpline;
+  int samples = 0;  // the file's "samples:": sides of a generalized cylinder; 0: not given
+  // `sides` points spaced evenly (by arc length) along the curve, starting
+  // where the curve starts; an open contour's ends are the first and last.
   std::vector<Vec3> resample(int sides) const;
   // The default contour: a unit circle.
   static Contour circle();

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,15 @@ struct Label {
   Provenance from;
 };
 
+// The view the Camera module asks for (LPFG manual 5.14): the camera at the
+// turtle's position, looking along its heading, with the turtle's up.
+struct CameraPose {
+  Vec3 position;
+  Vec3 heading{0, 1, 0};
+  Vec3 up{0, 0, 1};
+  Provenance from;
+};
+
 // A run of triangles in the Scene's pool: a polygon, a rhombus, a surface, a
 // generalized cylinder ...
 struct TriangleGroup {
@@ -78,6 +88,9 @@ struct Scene {
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> indices;
   std::vector<TriangleGroup> groups;
+
+  // Set by the last Camera module in the string.
+  std::optional<CameraPose> camera;
 
   // Adds triangles (vertex indices relative to `vertices`) as one group.
   void add_triangles(TriangleGroup::Kind kind, const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,

@@ -23,8 +23,10 @@ class TurtleInterpreter : public derive::InterpretedModuleVisitor {
   // Closes what the string left open (polygons, generalized cylinders).
   void finish();
 
+  TurtleInterpreter(const TurtleInterpreter&) = delete;
+  TurtleInterpreter& operator=(const TurtleInterpreter&) = delete;
+
  private:
-  struct State;
   struct Impl;
   Impl* impl_;
 };

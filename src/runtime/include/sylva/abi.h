@@ -97,6 +97,20 @@ struct ControlState {
   // Messages (Printf, warnings) go through the engine.
   void* host = nullptr;
   void (*message)(void* host, const char* text) = nullptr;
+  // Functions, curves and surfaces from the input files (LPFG manual 6.2),
+  // answered by the engine: `query` is an InputQuery, `in` and `out` its
+  // arguments and results. Null when the model runs without input files.
+  void* inputs = nullptr;
+  bool (*input_query)(void* inputs, int query, int id, const double* in, double* out) = nullptr;
+};
+
+// What ControlState::input_query is asked.
+enum InputQuery : int {
+  kQueryFunction = 0,       // in: x, min, max        out: y
+  kQueryFunctionTangent,    // in: x                  out: dx, dy
+  kQueryCurvePoint,         // in: s                  out: x, y, z
+  kQueryCurveNormal,        // in: s                  out: x, y, z
+  kQuerySurfacePatch,       // in: -                  out: 48 numbers (16 control points)
 };
 
 struct ModelDescriptor {

@@ -1,0 +1,89 @@
+#include "api/input_queries.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sylva/abi.h"
+
+namespace sylva {
+namespace {
+
+using geometry::Vec3;
+
+// Points along a curve by arc length, fine enough that linear interpolation
+// between them stays within a fraction of a percent of the curve.
+constexpr int kCurveSamples = 512;
+
+Vec3 curve_point(const geometry::Contour& contour, double s, Vec3* tangent) {
+  std::vector<Vec3> points = contour.resample(kCurveSamples);
+  if (points.empty()) return {};
+  const int segments = contour.closed ? kCurveSamples : kCurveSamples - 1;
+  double t = std::clamp(s, 0.0, 1.0) * segments;
+  int k = std::min(static_cast<int>(t), segments - 1);
+  float f = static_cast<float>(t - k);
+  const Vec3& a = points[static_cast<std::size_t>(k)];
+  const Vec3& b = points[static_cast<std::size_t>((k + 1) % kCurveSamples)];
+  if (tangent) *tangent = geometry::normalized(b - a);
+  return a + (b - a) * f;
+}
+
+}  // namespace
+
+bool answer_input_query(void* data, int query, int id, const double* in, double* out) {
+  const auto& inputs = *static_cast<const io::InputFiles*>(data);
+  switch (query) {
+    case abi::kQueryFunction:
+    case abi::kQueryFunctionTangent: {
+      if (id < 1 || id > static_cast<int>(inputs.functions.size())) return false;
+      const geometry::Function& f = inputs.functions[static_cast<std::size_t>(id - 1)];
+      if (query == abi::kQueryFunction) {
+        // pfunc: x in [min,max] is mapped onto the function's [0,1].
+        double min = in[1], max = in[2];
+        double x = max > min ? (std::clamp(in[0], min, max) - min) / (max - min) : std::clamp(in[0], 0.0, 1.0);
+        out[0] = f(static_cast<float>(x));
+      } else {
+        const double h = 1e-3;
+        double x = std::clamp(in[0], h, 1.0 - h);
+        double dy = (f(static_cast<float>(x + h)) - f(static_cast<float>(x - h))) / (2 * h);
+        double length = std::sqrt(1 + dy * dy);
+        out[0] = 1 / length;
+        out[1] = dy / length;
+      }
+      return true;
+    }
+    case abi::kQueryCurvePoint:
+    case abi::kQueryCurveNormal: {
+      if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
+      Vec3 tangent;
+      Vec3 p = curve_point(inputs.contours[static_cast<std::size_t>(id - 1)], in[0], &tangent);
+      // The normal lies in the curve's plane, to the right of the direction of travel.
+      Vec3 v = query == abi::kQueryCurvePoint ? p : Vec3{tangent.y, -tangent.x, 0};
+      out[0] = v.x;
+      out[1] = v.y;
+      out[2] = v.z;
+      return true;
+    }
+    case abi::kQuerySurfacePatch: {
+      if (id < 0 || id >= static_cast<int>(inputs.surfaces.size()) || inputs.surfaces[id].patches.empty())
+        return false;
+      const geometry::BezierPatch& patch = inputs.surfaces[static_cast<std::size_t>(id)].patches.front();
+      for (int k = 0; k < 16; ++k) {
+        out[3 * k] = patch.points[k].x;
+        out[3 * k + 1] = patch.points[k].y;
+        out[3 * k + 2] = patch.points[k].z;
+      }
+      return true;
+    }
+    default:
+      return false;
+  }
+}
+
+std::vector<std::string> function_name_defines(const io::InputFiles& inputs) {
+  std::vector<std::string> defines;
+  for (std::size_t k = 0; k < inputs.functions.size(); ++k)
+    if (!inputs.functions[k].name.empty()) defines.push_back(inputs.functions[k].name + "=" + std::to_string(k + 1));
+  return defines;
+}
+
+}  // namespace sylva

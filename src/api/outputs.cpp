@@ -1,0 +1,134 @@
+#include "api/outputs.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "geometry/tessellation.h"
+#include "io/mesh_writers.h"
+#include "io/png_renderer.h"
+#include "io/vector_writer.h"
+#include "support/diagnostic.h"
+
+namespace sylva {
+namespace {
+
+enum class Format { Obj, Ply, Glb, Vector, Png, Unknown };
+
+Format format_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".obj") return Format::Obj;
+  if (ext == ".ply") return Format::Ply;
+  if (ext == ".glb") return Format::Glb;
+  if (ext == ".svg" || ext == ".pdf" || ext == ".ps" || ext == ".eps") return Format::Vector;
+  if (ext == ".png") return Format::Png;
+  return Format::Unknown;
+}
+
+const io::ViewFile* view_file(const Simulation& s) { return s.inputs().view ? &*s.inputs().view : nullptr; }
+
+geometry::ViewParameters view_parameters(const Simulation& s) {
+  const io::ViewFile* v = view_file(s);
+  return v ? v->view(0) : geometry::ViewParameters{};
+}
+
+io::ImageSettings image_settings(const Simulation& s) {
+  io::ImageSettings settings;
+  if (const io::ViewFile* v = view_file(s)) {
+    settings.render = v->render;
+    settings.lights = v->lights_or_default();
+    settings.contour_sides = v->contour_sides;
+  } else {
+    settings.lights = io::ViewFile{}.lights_or_default();
+  }
+  return settings;
+}
+
+void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
+                 const geometry::ViewParameters& view, const OutputOptions& options) {
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(s), options.width,
+                                       options.height));
+}
+
+}  // namespace
+
+void check_output_path(const std::string& path) {
+  if (format_of(path) == Format::Unknown)
+    throw ModelError(SourceLocation{path, 0, 0},
+                     "unknown output format (expected .obj, .ply, .glb, .svg, .pdf, .ps, .eps or .png)");
+}
+
+void write_output(const std::string& path, Simulation& simulation, const OutputOptions& options) {
+  check_output_path(path);
+  const geometry::Scene scene = simulation.scene();
+  const io::ViewFile* view = view_file(simulation);
+  const geometry::LineStyle line_style = view ? view->render.line_style : geometry::LineStyle::Pixel;
+  switch (format_of(path)) {
+    case Format::Obj:
+    case Format::Ply:
+    case Format::Glb: {
+      geometry::TessellationOptions tess;
+      tess.line_style = line_style;
+      tess.contour_sides = view ? view->contour_sides : 16;
+      geometry::TriangleMesh mesh = geometry::tessellate(scene, tess);
+      const Format f = format_of(path);
+      if (f == Format::Obj) io::write_obj(path, mesh, simulation.inputs().palette, simulation.types());
+      else if (f == Format::Ply) io::write_ply(path, mesh, simulation.inputs().palette, simulation.types());
+      else io::write_glb(path, mesh, simulation.inputs().palette, simulation.types());
+      break;
+    }
+    case Format::Vector:
+      io::write_vector_drawing(path, scene, simulation.inputs().palette, view_parameters(simulation), line_style,
+                               options.width, options.height, &simulation.types(),
+                               view ? view->render.ps_linecap : 1);
+      break;
+    case Format::Png:
+      write_image(path, scene, simulation, view_parameters(simulation), options);
+      break;
+    case Format::Unknown:
+      break;
+  }
+}
+
+int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw ModelError(SourceLocation{dir, 0, 0}, "cannot create the frames folder: " + ec.message());
+
+  derive::Derivation& d = simulation.derivation();
+  const int length = steps >= 0 ? steps : d.derivation_length();
+  const io::AnimationFile animation = simulation.inputs().animation.value_or(io::AnimationFile{});
+  std::vector<int> frames = animation.frames(length);
+  if (frames.empty()) return 0;
+
+  geometry::ViewParameters view = view_parameters(simulation);
+  if (!view.box && !animation.scale_between_frames && !animation.new_view_between_frames) {
+    // A first pass finds where the plant ends up, so the camera stays still.
+    d.begin();
+    for (int k = 0; k < frames.back() && !d.stop_requested(); ++k) d.step();
+    geometry::Box bounds = simulation.scene().bounds();
+    if (!bounds.empty()) view.box = bounds;
+    d.finish();
+  }
+
+  int written = 0;
+  d.begin();
+  int done = 0;
+  for (int frame : frames) {
+    while (done < frame && !d.stop_requested()) {
+      d.step();
+      ++done;
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
+    write_image((std::filesystem::path(dir) / name).string(), simulation.scene(), simulation, view, options);
+    ++written;
+    if (d.stop_requested()) break;
+  }
+  d.finish();
+  return written;
+}
+
+}  // namespace sylva

@@ -1,0 +1,30 @@
+// Writing what a simulation shows: meshes (OBJ, PLY, glTF), vector drawings
+// (SVG, PDF, PostScript), images (PNG) and animation frames, each chosen by
+// its file extension.
+#pragma once
+
+#include <string>
+
+#include "api/simulation.h"
+
+namespace sylva {
+
+struct OutputOptions {
+  int width = 800;   // images and drawings, in pixels
+  int height = 800;
+};
+
+// Throws ModelError naming `path` if its extension is not an output format.
+void check_output_path(const std::string& path);
+
+// Writes the simulation's current string, drawn by the turtle, to `path`.
+void write_output(const std::string& path, Simulation& simulation, const OutputOptions& options);
+
+// Runs the derivation again from the axiom and writes one PNG per frame of
+// the animation file (every step when there is none) into `dir` as
+// frame-NNNN.png, N being the step. The camera frames the last frame's
+// bounds unless the animation file asks to rescale between frames or the view
+// file gives a box. Returns the number of frames written.
+int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps = -1);
+
+}  // namespace sylva

@@ -1,0 +1,29 @@
+// Generalized cylinders (LPFG manual 5.8): a contour swept along the turtle's
+// path. The turtle places one ring of contour points at each control point;
+// consecutive rings are joined by a band of triangles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/vec3.h"
+
+namespace sylva::geometry {
+
+// The ring of a contour at a control point: contour point (x, y, z) goes to
+// origin + left * (x * scale_left) + up * (y * scale_up) + heading * (z * scale_up).
+void place_ring(const Vec3* contour, int sides, Vec3 origin, Vec3 heading, Vec3 left, Vec3 up, float scale_left,
+                float scale_up, std::vector<Vec3>& positions);
+
+// Appends the triangles joining ring `a` to ring `b` (each `sides` vertices
+// from those first indices). A closed contour also joins its last point to
+// its first. The triangles face outward for a contour running
+// counter-clockwise in its (left, up) plane; `reverse` flips them.
+void join_rings(std::uint32_t a, std::uint32_t b, int sides, bool closed, bool reverse,
+                std::vector<std::uint32_t>& indices);
+
+// Twice the signed area of a contour in its plane: positive when it runs
+// counter-clockwise.
+float contour_orientation(const Vec3* contour, int sides);
+
+}  // namespace sylva::geometry

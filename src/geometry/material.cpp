@@ -1,0 +1,44 @@
+#include "geometry/material.h"
+
+#include <cmath>
+
+namespace sylva::geometry {
+
+namespace {
+
+Rgb from_hsv(float hue_degrees, float saturation, float value) {
+  float h = std::fmod(hue_degrees, 360.0f) / 60.0f;
+  int sector = static_cast<int>(h) % 6;
+  float f = h - std::floor(h);
+  float p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
+  switch (sector) {
+    case 0: return {value, t, p};
+    case 1: return {q, value, p};
+    case 2: return {p, value, t};
+    case 3: return {p, q, value};
+    case 4: return {t, p, value};
+    default: return {value, p, q};
+  }
+}
+
+}  // namespace
+
+// Neither the LPFG manual nor the VLAB tools manual lists lpfg's built-in
+// colormap. Index 0 is the background and black, as in lpfg's window; 1, the
+// turtle's initial colour, is white so a model drawn with no colormap shows.
+// Every other index gets its own hue, a golden angle apart, so neighbouring
+// indices (IncColor) are told apart at a glance.
+Palette Palette::default_palette() {
+  Palette palette;
+  auto set = [&](int index, Rgb color) {
+    Material& m = palette.entries[static_cast<std::size_t>(index)];
+    m.ambient = color;
+    m.diffuse = color;
+  };
+  set(0, {0, 0, 0});
+  set(1, {1, 1, 1});
+  for (int i = 2; i < 256; ++i) set(i, from_hsv(137.507764f * static_cast<float>(i - 2), 0.6f, 0.95f));
+  return palette;
+}
+
+}  // namespace sylva::geometry

@@ -1,0 +1,92 @@
+#include "io/gl_meshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace sylva::io::gl {
+
+namespace {
+
+// Big plants have hundreds of thousands of buds and internodes a few pixels
+// across, which look the same with a handful of sides as with the view
+// file's; the time and memory they take is proportional to their sides.
+constexpr double kOutlineTolerance = 0.5;  // pixels
+
+int sides_for(float radius_pixels, int fewest, int most) {
+  fewest = std::min(fewest, most);
+  if (!(radius_pixels > kOutlineTolerance)) return fewest;
+  // A regular polygon of n sides strays r (1 - cos(pi / n)) inside its circle.
+  const double n = std::numbers::pi / std::acos(1.0 - kOutlineTolerance / static_cast<double>(radius_pixels));
+  if (!(n < most)) return most;
+  int sides = std::max(fewest, static_cast<int>(std::ceil(n)));
+  if (sides > 4) sides += sides & 1;  // fewer distinct counts, fewer meshes
+  return std::min(sides, most);
+}
+
+}  // namespace
+
+std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& scene, const geometry::Camera& camera,
+                                                        const geometry::TessellationOptions& options,
+                                                        float pixel_scale, bool every_side) {
+  using geometry::LineStyle;
+  const int most = std::max(3, options.contour_sides);
+  const bool facing = std::any_of(scene.circles.begin(), scene.circles.end(),
+                                  [](const geometry::Circle& c) { return c.facing_viewer; });
+  const bool pixel_lines = options.line_style == LineStyle::Pixel && !scene.segments.empty();
+  const bool cylinders = options.line_style == LineStyle::Cylinder;
+  auto pixels = [&](float radius, geometry::Vec3 at) { return radius * camera.pixels_per_unit_at(at) * pixel_scale; };
+
+  std::vector<int> segment_sides(cylinders ? scene.segments.size() : 0, most);
+  std::vector<int> circle_sides(scene.circles.size(), most), sphere_sides(scene.spheres.size(), most);
+  if (!every_side) {
+    for (std::size_t i = 0; i < segment_sides.size(); ++i) {
+      const geometry::Segment& s = scene.segments[i];
+      const float radius = std::max(s.start_width, s.end_width) * 0.5f;
+      segment_sides[i] = sides_for(pixels(radius, (s.start + s.end) * 0.5f), 3, most);
+    }
+    for (std::size_t i = 0; i < circle_sides.size(); ++i) {
+      const geometry::Circle& c = scene.circles[i];
+      circle_sides[i] = sides_for(pixels(c.radius + std::max(0.0f, c.outline) * 0.5f, c.center), 4, most);
+    }
+    for (std::size_t i = 0; i < sphere_sides.size(); ++i)
+      sphere_sides[i] = sides_for(pixels(scene.spheres[i].radius, scene.spheres[i].center), 4, most);
+  }
+  auto fewer = [&](const std::vector<int>& sides) {
+    return std::any_of(sides.begin(), sides.end(), [&](int n) { return n < most; });
+  };
+  if (!facing && !pixel_lines && !fewer(segment_sides) && !fewer(circle_sides) && !fewer(sphere_sides))
+    return {geometry::tessellate(scene, {options.line_style, most})};
+
+  // Primitives by the sides they get; the triangle pool goes with the rest.
+  std::map<int, geometry::Scene, std::greater<>> by_sides;
+  geometry::Scene& full = by_sides[most];
+  full.positions = scene.positions;
+  full.normals = scene.normals;
+  full.indices = scene.indices;
+  full.groups = scene.groups;
+  if (!pixel_lines) {
+    for (std::size_t i = 0; i < scene.segments.size(); ++i)
+      by_sides[cylinders ? segment_sides[i] : most].segments.push_back(scene.segments[i]);
+  }
+  for (std::size_t i = 0; i < scene.circles.size(); ++i) {
+    geometry::Circle c = scene.circles[i];
+    if (c.facing_viewer) {
+      c.facing_viewer = false;
+      c.normal = -camera.direction();
+    }
+    by_sides[circle_sides[i]].circles.push_back(c);
+  }
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) by_sides[sphere_sides[i]].spheres.push_back(scene.spheres[i]);
+
+  std::vector<geometry::TriangleMesh> meshes;
+  for (auto& [sides, part] : by_sides) {
+    if (part.empty()) continue;
+    meshes.push_back(geometry::tessellate(part, {options.line_style, sides}));
+    part = {};
+  }
+  return meshes;
+}
+
+}  // namespace sylva::io::gl

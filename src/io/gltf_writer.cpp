@@ -1,0 +1,202 @@
+#define TINYGLTF_IMPLEMENTATION
+#include "io/tiny_gltf_setup.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "io/mesh_support.h"
+#include "io/mesh_writers.h"
+#include "io/output_file.h"
+#include "support/diagnostic.h"
+
+namespace sylva::io {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "glTF buffers are written as the host's little-endian bytes");
+
+using geometry::MeshPart;
+using geometry::Vec3;
+
+// Palette colours are what lpfg shows on screen, i.e. sRGB; glTF factors are linear.
+double linear(float srgb) {
+  double c = std::clamp(std::isfinite(srgb) ? static_cast<double>(srgb) : 0.0, 0.0, 1.0);
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+tinygltf::Material material(int color, const geometry::Material& m) {
+  tinygltf::Material out;
+  out.name = mesh_support::material_name(color);
+  double alpha = std::clamp(1.0 - static_cast<double>(m.transparency), 0.0, 1.0);
+  out.pbrMetallicRoughness.baseColorFactor = {linear(m.diffuse.r), linear(m.diffuse.g), linear(m.diffuse.b), alpha};
+  out.pbrMetallicRoughness.metallicFactor = 0;
+  // The usual Blinn-Phong exponent to GGX roughness match.
+  out.pbrMetallicRoughness.roughnessFactor = std::sqrt(2.0 / (std::max(0.0f, m.shininess) + 2.0));
+  out.emissiveFactor = {linear(m.emission.r), linear(m.emission.g), linear(m.emission.b)};
+  out.alphaMode = alpha < 1 ? "BLEND" : "OPAQUE";
+  // Flat strips, discs and the turtle's polygons are seen from both sides.
+  out.doubleSided = true;
+  return out;
+}
+
+class GlbBuilder {
+ public:
+  GlbBuilder(const geometry::TriangleMesh& mesh, tinygltf::Model& model)
+      : mesh_(mesh), model_(model), stamp_(mesh.positions.size(), 0), remap_(mesh.positions.size()) {
+    model_.buffers.emplace_back();
+    model_.buffers[0].data.reserve(mesh.positions.size() * 2 * sizeof(Vec3) +
+                                   (mesh.indices.size() + mesh.line_indices.size()) * sizeof(std::uint32_t) +
+                                   (mesh.parts.size() + mesh.line_parts.size()) * 4 * sizeof(std::uint32_t));
+  }
+
+  // One primitive per colour: `per` indices an element (3 triangles, 2 lines).
+  void add_primitives(const std::vector<MeshPart>& parts, const std::vector<std::uint32_t>& indices, int mode,
+                      std::uint32_t per, const std::array<int, 256>& material_of, tinygltf::Mesh& out) {
+    std::array<std::vector<const MeshPart*>, 256> by_color;
+    for (const MeshPart& part : parts) by_color[static_cast<std::size_t>(mesh_support::color_slot(part.color))].push_back(&part);
+    for (std::size_t color = 0; color < 256; ++color) {
+      if (by_color[color].empty()) continue;
+      ++serial_;
+      positions_.clear();
+      normals_.clear();
+      indices_.clear();
+      records_.clear();
+      for (const MeshPart* part : by_color[color]) {
+        std::uint32_t count = part->index_count - part->index_count % per;
+        if (count == 0) continue;
+        records_.insert(records_.end(), {static_cast<std::uint32_t>(indices_.size() / per), count / per,
+                                         part->from.module_index, part->from.module_id});
+        for (std::uint32_t k = 0; k < count; ++k) indices_.push_back(vertex(indices[part->first_index + k]));
+      }
+      if (indices_.empty()) continue;
+
+      tinygltf::Primitive primitive;
+      primitive.mode = mode;
+      primitive.material = material_of[color];
+      primitive.attributes["POSITION"] = accessor(view(positions_, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_TYPE_VEC3,
+                                                  TINYGLTF_COMPONENT_TYPE_FLOAT, positions_.size(), true);
+      primitive.attributes["NORMAL"] = accessor(view(normals_, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_TYPE_VEC3,
+                                                TINYGLTF_COMPONENT_TYPE_FLOAT, normals_.size(), false);
+      primitive.indices = accessor(view(indices_, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER), TINYGLTF_TYPE_SCALAR,
+                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, indices_.size(), false);
+      tinygltf::Value::Object provenance;
+      provenance["bufferView"] = tinygltf::Value(view(records_, 0));
+      provenance["count"] = tinygltf::Value(static_cast<int>(records_.size() / 4));
+      provenance["layout"] = tinygltf::Value(std::string(
+          "little-endian uint32 records: first element, element count, module index, module id"));
+      tinygltf::Value::Object extras;
+      extras["sylva_provenance"] = tinygltf::Value(std::move(provenance));
+      primitive.extras = tinygltf::Value(std::move(extras));
+      out.primitives.push_back(std::move(primitive));
+    }
+  }
+
+ private:
+  std::uint32_t vertex(std::uint32_t i) {
+    if (stamp_[i] != serial_) {
+      stamp_[i] = serial_;
+      remap_[i] = static_cast<std::uint32_t>(positions_.size());
+      positions_.push_back(mesh_.positions[i]);
+      normals_.push_back(i < mesh_.normals.size() ? mesh_.normals[i] : Vec3{0, 0, 1});
+    }
+    return remap_[i];
+  }
+
+  template <typename T>
+  int view(const std::vector<T>& data, int target) {
+    std::vector<unsigned char>& buffer = model_.buffers[0].data;
+    tinygltf::BufferView v;
+    v.buffer = 0;
+    v.byteOffset = buffer.size();
+    v.byteLength = data.size() * sizeof(T);
+    v.target = target;
+    buffer.resize(buffer.size() + v.byteLength);
+    std::memcpy(buffer.data() + v.byteOffset, data.data(), v.byteLength);
+    model_.bufferViews.push_back(std::move(v));
+    return static_cast<int>(model_.bufferViews.size() - 1);
+  }
+
+  int accessor(int view, int type, int component_type, std::size_t count, bool bounds) {
+    tinygltf::Accessor a;
+    a.bufferView = view;
+    a.type = type;
+    a.componentType = component_type;
+    a.count = count;
+    if (bounds) {
+      geometry::Box box;
+      for (const Vec3& p : positions_) box.add(p);
+      a.minValues = {box.min.x, box.min.y, box.min.z};
+      a.maxValues = {box.max.x, box.max.y, box.max.z};
+    }
+    model_.accessors.push_back(std::move(a));
+    return static_cast<int>(model_.accessors.size() - 1);
+  }
+
+  const geometry::TriangleMesh& mesh_;
+  tinygltf::Model& model_;
+  // remap_[i] is vertex i's index in the current primitive when stamp_[i] ==
+  // serial_: no table to clear per primitive.
+  std::vector<std::uint32_t> stamp_, remap_;
+  std::uint32_t serial_ = 0;
+  std::vector<Vec3> positions_, normals_;
+  std::vector<std::uint32_t> indices_, records_;
+};
+
+}  // namespace
+
+void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types) {
+  static_assert(sizeof(Vec3) == 12, "positions are copied as packed float triples");
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "Sylva";
+
+  std::array<int, 256> material_of{};
+  for (int color : mesh_support::colors_used(mesh)) {
+    material_of[static_cast<std::size_t>(color)] = static_cast<int>(model.materials.size());
+    model.materials.push_back(material(color, palette.at(color)));
+  }
+
+  tinygltf::Mesh out;
+  out.name = "sylva";
+  {
+    GlbBuilder builder(mesh, model);
+    builder.add_primitives(mesh.parts, mesh.indices, TINYGLTF_MODE_TRIANGLES, 3, material_of, out);
+    builder.add_primitives(mesh.line_parts, mesh.line_indices, TINYGLTF_MODE_LINE, 2, material_of, out);
+  }
+  if (model.buffers[0].data.empty()) model.buffers.clear();
+
+  tinygltf::Scene scene;
+  // tinygltf writes a scene with no members as null, which readers reject.
+  scene.name = "sylva";
+  if (!out.primitives.empty()) {
+    std::size_t name_count = types.size();
+    for (const auto* parts : {&mesh.parts, &mesh.line_parts})
+      for (const MeshPart& part : *parts) name_count = std::max<std::size_t>(name_count, part.from.module_id + 1u);
+    tinygltf::Value::Array names;
+    names.reserve(name_count);
+    for (std::size_t id = 0; id < name_count; ++id)
+      names.emplace_back(mesh_support::module_name(types, static_cast<abi::ModuleId>(id)));
+    tinygltf::Value::Object extras;
+    extras["sylva_module_names"] = tinygltf::Value(std::move(names));
+    out.extras = tinygltf::Value(std::move(extras));
+    model.meshes.push_back(std::move(out));
+    tinygltf::Node node;
+    node.name = "sylva";
+    node.mesh = 0;
+    model.nodes.push_back(std::move(node));
+    scene.nodes.push_back(0);
+  }
+  model.scenes.push_back(std::move(scene));
+  model.defaultScene = 0;
+
+  std::ostringstream stream;
+  tinygltf::TinyGLTF gltf;
+  if (!gltf.WriteGltfSceneToStream(&model, stream, false, true))
+    throw ModelError(SourceLocation{path, 0, 0}, "cannot encode the glTF file");
+  write_output_file(path, std::move(stream).str());
+}
+
+}  // namespace sylva::io

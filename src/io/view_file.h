@@ -1,0 +1,152 @@
+// The view file (.v, LPFG manual 8.1): camera, rendering, geometry
+// presentation, tropisms and the external files (surfaces, meshes,
+// textures). It goes through the C preprocessor first, as in lpfg.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/camera.h"
+#include "geometry/material.h"
+#include "geometry/tessellation.h"
+#include "geometry/vec3.h"
+#include "turtle/turtle_settings.h"
+
+namespace sylva::io {
+
+enum class RenderMode { Filled, Wireframe, Shaded, Shadows };
+enum class GenerateOnViewChange { Off, On, Triggered };
+
+// light: (8.1.2). Without any light command, lpfg lights the scene with one
+// directional light, Light{} below.
+struct Light {
+  enum class Kind { Directional, Point, Spot };
+  Kind kind = Kind::Directional;
+  geometry::Vec3 direction{0, 0, 1};  // V: for a directional light; P:'s direction for a spot
+  geometry::Vec3 position{0, 0, 0};   // O: of a point light or spot
+  float spot_exponent = 0;
+  float spot_cutoff = 180;            // degrees
+  geometry::Rgb ambient{1, 1, 1};
+  geometry::Rgb diffuse{1, 1, 1};
+  geometry::Rgb specular{1, 1, 1};
+  float constant_attenuation = 1, linear_attenuation = 0, quadratic_attenuation = 0;  // T:
+};
+
+struct ShadowMap {
+  int size = 1024;
+  geometry::Rgb color{0.2f, 0.2f, 0.4f};
+  float offset_factor = 5, offset_units = 10;
+};
+
+struct RenderSettings {
+  bool z_buffer = false;
+  RenderMode mode = RenderMode::Filled;
+  ShadowMap shadow_map;
+  bool stationary_lights = true;
+  bool concave_polygons = false;
+  bool auto_normals = false;
+  int antialiasing = 0;  // samples per pixel, 0..10
+  geometry::LineStyle line_style = geometry::LineStyle::Pixel;
+  float wireframe_line_width = 1;
+  bool capped_cylinders = false;
+  bool backface_culling = false;
+  // PostScript output (8.1.7).
+  int ps_linecap = 0;  // 0 butt, 1 round, 2 projecting
+  int gradient_direction = 0;  // 0 off, 1 vertical, 2 horizontal
+  float gradient_magnitude = 0;
+};
+
+// window: (7.3): a view's place in the image, relative to its size.
+struct ViewWindow {
+  std::string name;  // its id is its position among the windows, from 0
+  float left = 0, top = 0, width = 1, height = 1;
+};
+
+// tropism: and torque: (8.1.4), with every part the manual gives.
+struct TropismCommand {
+  geometry::Vec3 direction{0, -1, 0};  // T:
+  float angle = 0;                     // A:, degrees from T
+  float intensity = 1;                 // I:
+  float elasticity = 0;                // E:
+  float step = 0;                      // S:
+  bool torque = false;
+};
+
+// surface: (8.1.5); surfaces get ids from 0 in this order.
+struct SurfaceCommand {
+  std::string file;  // as written
+  std::string path;  // relative to the view file's folder
+  float scale = 1;
+  int s_divisions = 0, t_divisions = 0;  // 0: the surface's default
+  int texture = -1;                      // -1: none
+  int line = 0, column = 0;              // of the file name, for messages
+};
+
+struct MeshCommand {
+  std::string file, path;
+  float scale = 1;
+  geometry::Vec3 contact{0, 0, 0};
+};
+
+struct WinFont {
+  std::string name = "Arial";
+  int size = 12;
+  bool bold = false, italic = false;
+};
+
+struct ViewFile {
+  std::string path;
+
+  // The camera of each view id (0 in single-view mode). A view without its
+  // own view: or box: command gets default_view, which holds the global
+  // projection:, scale:, front/back distance: commands.
+  geometry::ViewParameters default_view;
+  std::map<int, geometry::ViewParameters> views;
+  const geometry::ViewParameters& view(int id = 0) const;
+
+  float min_zoom = 0.05f, max_zoom = 50;
+  GenerateOnViewChange generate_on_view_change = GenerateOnViewChange::Off;
+  std::vector<ViewWindow> windows;
+  int window_border_width = 1;
+  geometry::Rgb window_border_color{0, 0, 0};
+
+  RenderSettings render;
+  std::vector<Light> lights;  // empty: the default light
+  std::vector<Light> lights_or_default() const;
+
+  int contour_sides = 16;
+  bool corrected_rotation = true;
+  std::vector<TropismCommand> tropisms;  // ids from 1
+  std::optional<TropismCommand> simple_tropism;  // stropism:
+
+  std::vector<SurfaceCommand> surfaces;
+  std::vector<MeshCommand> meshes;
+  std::vector<std::string> textures;  // paths relative to the view file's folder; ids from 0
+
+  std::string font = "-*-courier-bold-r-*-*-12-*-*-*-*-*-*-*";
+  WinFont winfont;
+
+  // cpfg's "initial color:" and "initial line width:", which cpfg view files
+  // carry into lpfg models.
+  std::optional<int> initial_color;
+  std::optional<float> initial_line_width;
+
+  // "file:line:column: warning: ..." for commands lpfg does not know, and
+  // values it would ignore.
+  std::vector<std::string> warnings;
+
+  // What the turtle takes from the view file; the caller fills `surfaces`
+  // and `contours`.
+  turtle::TurtleSettings turtle_settings() const;
+  geometry::TessellationOptions tessellation_options() const;
+};
+
+// Preprocesses `path` with `compiler -E` (empty: $SYLVA_CXX, $CXX, then g++)
+// and reads its commands. A missing file, a preprocessor error or a malformed
+// value of a known command is a ModelError at the file, line and column of
+// the original text.
+ViewFile read_view_file(const std::string& path, const std::string& compiler = "");
+
+}  // namespace sylva::io

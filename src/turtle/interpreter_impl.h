@@ -1,0 +1,141 @@
+// The turtle's working state, shared by the files that implement it:
+// interpreter.cpp (dispatch, moves, rotations, the stack, query modules),
+// shapes.cpp (circles, polygons, surfaces, meshes) and cylinders.cpp
+// (generalized cylinders).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "geometry/contour.h"
+#include "geometry/placement.h"
+#include "geometry/scene.h"
+#include "geometry/surface.h"
+#include "turtle/frame.h"
+#include "turtle/interpreter.h"
+#include "turtle/turtle_settings.h"
+#include "turtle/turtle_state.h"
+
+namespace sylva::turtle {
+
+using geometry::Provenance;
+using geometry::Scene;
+
+// Points closer than this are the same point (LPFG manual 5.1).
+inline constexpr float kEpsilon = 1e-5f;
+
+struct TurtleInterpreter::Impl {
+  Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene, std::string* trace);
+
+  void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
+  void finish();
+
+  // ---- interpreter.cpp
+  void forward(float distance, bool draw, bool polygon_vertex);
+  void move_to(Vec3 target);
+  void line(Vec3 from, Vec3 to);
+  Vec3 to_world(Vec3 p) const;
+  Vec3 to_world_offset(Vec3 d) const;
+  void turn(float degrees, int axis);  // 0: around U, 1: around L, 2: around H
+  void push();
+  void pop();
+  void apply_tropisms();
+  void change_elasticity(int id, float value, bool relative);
+  void query(unsigned char* params, Vec3 value, bool in_string);
+  void note(const char* text);
+  void note_position(const char* text, Vec3 p);
+
+  // ---- shapes.cpp
+  void circle(float radius, float outline, bool facing_viewer);
+  void sphere(float radius);
+  void start_polygon();
+  void polygon_vertex();
+  void end_polygon();
+  void draw_polygon(std::size_t first);
+  void flat_shape(geometry::TriangleGroup::Kind kind, const Vec3* corners, int count);
+  void surface(int id, Vec3 scale, const char* module);
+  void mesh(int id, Vec3 scale, const char* module);
+  void dynamic_surface(const unsigned char* params);
+  void surface_point(int row, int column);
+  void draw_lsystem_surface();
+  void label(const unsigned char* params);
+  geometry::Placement placement(Vec3 local_heading, Vec3 local_up, Vec3 contact, Vec3 scale) const;
+  void begin_group();
+  void end_group(geometry::TriangleGroup::Kind kind);
+
+  // ---- cylinders.cpp
+  void check_contour(int id, const char* module) const;
+  const geometry::Contour& contour(int id) const;
+  const Vec3* contour_points(int id, int blend_id, float blend, int sides);
+  struct CylinderPoint;
+  CylinderPoint control_point() const;
+  void start_cylinder();
+  void cylinder_point();
+  void end_cylinder();
+  bool cylinder_open(const TurtleState& s) const;
+  void close_cylinder(int index);
+  void draw_cylinder(int index);
+
+  const TurtleSettings& settings_;
+  const ModuleTypes& types_;
+  Scene* scene_;
+  std::string* trace_;
+
+  TurtleState state_;
+  std::vector<TurtleState> stack_;
+  Provenance from_;  // the module being interpreted
+  AngleCache angles_;
+
+  // Elasticities of the view file's tropisms (ids 1..n at 0..n-1) and of the
+  // simple tropism (at n); saved with the state at SB.
+  std::vector<float> elasticity_;
+  std::vector<float> saved_elasticity_;
+  bool bending_ = false;  // some elasticity is not zero
+
+  // Open polygons (SP ... EP nest); their vertices, with the turtle's up at
+  // each, in one pool.
+  struct OpenPolygon {
+    std::size_t first = 0;
+    Provenance from;
+  };
+  std::vector<OpenPolygon> polygons_;
+  std::vector<Vec3> polygon_points_, polygon_ups_;
+  std::vector<std::uint32_t> triangles_, triangulation_work_;
+  std::size_t group_first_index_ = 0;
+
+  // Generalized cylinders: slots reused once drawn, so their point vectors
+  // keep their capacity.
+  struct CylinderPoint {
+    Vec3 position;
+    Frame frame;
+    float width = 1;
+    int contour = 0, blend_contour = 0;
+    float blend = 0;
+    float scale_left = 1, scale_up = 1;
+    int color = 1;
+    Provenance from;
+  };
+  struct Cylinder {
+    std::vector<CylinderPoint> points;
+    int sides = 8;
+    bool open = false;
+    std::uint32_t serial = 0;
+  };
+  std::vector<Cylinder> cylinders_;
+  std::uint32_t next_serial_ = 1;
+  struct ResampledContour {
+    int id = 0;
+    int sides = 0;
+    std::vector<Vec3> points;
+  };
+  std::deque<ResampledContour> resampled_;  // references stay valid as it grows
+  std::vector<Vec3> blended_;
+
+  // The L-system-defined surface (InitSurface, SurfacePoint, DrawSurface).
+  geometry::BezierPatch lsystem_surface_;
+};
+
+}  // namespace sylva::turtle

@@ -1,0 +1,37 @@
+// What the turtle carries from module to module and saves on its stack at SB:
+// position, frame, drawing parameters, the coordinate system of MoveTo and
+// LineTo, and the generalized-cylinder settings.
+#pragma once
+
+#include <cstdint>
+
+#include "turtle/frame.h"
+
+namespace sylva::turtle {
+
+struct TurtleState {
+  Vec3 position;
+  Frame frame;
+  float width = 1;
+  int color = 1;
+
+  // SetCoordinateSystem: MoveTo, LineTo ... points are origin + x*px + y*py + z*pz.
+  Vec3 origin{0, 0, 0};
+  Vec3 axis_x{1, 0, 0}, axis_y{0, 1, 0}, axis_z{0, 0, 1};
+
+  // Generalized cylinders: the contour (blended toward a second one), its
+  // scale, the sides of the next cylinder (0: the contour's or the view
+  // file's) and the cylinder this branch is adding control points to.
+  int contour = 0, blend_contour = 0;
+  float blend = 0;
+  float contour_scale_left = 1, contour_scale_up = 1;
+  int contour_sides = 0;
+  int cylinder = -1;             // index of the open cylinder, -1: none
+  std::uint32_t cylinder_serial = 0;  // tells a reused cylinder slot from the one this state knew
+
+  int texture = -1;
+  float texture_v = 1;
+  int u_precision = 0, v_precision = 0;  // 0: the surface's own
+};
+
+}  // namespace sylva::turtle
