@@ -1,13 +1,13 @@
 // Rendering benchmarks (Google Benchmark), part of sylva_bench.
 //
-//   Render/plant/<line style>/<render mode>/<contour sides>
+//   Render/plant/<line style>/<render mode>[/antialiasing_<n>]
 //       A hand-built Scene shaped like a branching plant of about a million
 //       modules: a binary tree 19 levels deep (524,287 internodes, each
 //       branch rolled 90 degrees from its parent) with a bud, a sphere, on
 //       each of its 262,144 tips. Rendered to a 1920 x 1080 image and written
-//       as a PNG. Pixel-style internodes are 1 to 8 pixels wide; polygon and
-//       cylinder ones a tenth of their length. The z buffer is on only where
-//       the render mode forces it (shaded), as in lpfg's defaults.
+//       as a PNG, with lpfg's defaults otherwise (16 contour sides, z buffer
+//       off, one light). Pixel-style internodes are 1 to 8 pixels wide;
+//       cylinders a tenth of their length.
 //
 // Counters:
 //   render_s     render_image: tessellation, OpenGL drawing, reading back.
@@ -88,7 +88,8 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, sylva::io::RenderMode mode, int sides) {
+void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, sylva::io::RenderMode mode,
+                  int antialiasing) {
   const Scene scene = plant(style == sylva::geometry::LineStyle::Pixel);
   sylva::geometry::Palette palette = sylva::geometry::Palette::default_palette();
   palette.entries[0].diffuse = {1, 1, 1};
@@ -103,7 +104,7 @@ void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, syl
   sylva::io::ImageSettings settings;
   settings.render.line_style = style;
   settings.render.mode = mode;
-  settings.contour_sides = sides;
+  settings.render.antialiasing = antialiasing;
   const std::string path = (std::filesystem::temp_directory_path() / ("sylva-render-bench-" + std::to_string(getpid()) + ".png")).string();
   double render_s = 0, png_s = 0;
   for (auto _ : state) {
@@ -132,17 +133,18 @@ void register_render_benchmarks() {
     const char* name;
     LineStyle style;
     RenderMode mode;
-    int sides;
+    int antialiasing;
   };
   const Case cases[] = {
-      {"pixel/filled/16", LineStyle::Pixel, RenderMode::Filled, 16},
-      {"pixel/filled/8", LineStyle::Pixel, RenderMode::Filled, 8},
-      {"pixel/shaded/8", LineStyle::Pixel, RenderMode::Shaded, 8},
-      {"cylinder/shaded/8", LineStyle::Cylinder, RenderMode::Shaded, 8},
-      {"cylinder/shaded/4", LineStyle::Cylinder, RenderMode::Shaded, 4},
+      {"pixel/filled", LineStyle::Pixel, RenderMode::Filled, 0},
+      {"pixel/shaded", LineStyle::Pixel, RenderMode::Shaded, 0},
+      {"cylinder/shaded", LineStyle::Cylinder, RenderMode::Shaded, 0},
+      {"cylinder/shadows", LineStyle::Cylinder, RenderMode::Shadows, 0},
+      {"cylinder/shaded/antialiasing_4", LineStyle::Cylinder, RenderMode::Shaded, 4},
   };
   for (const Case& c : cases)
-    benchmark::RegisterBenchmark((std::string("Render/plant/") + c.name).c_str(), render_plant, c.style, c.mode, c.sides)
+    benchmark::RegisterBenchmark((std::string("Render/plant/") + c.name).c_str(), render_plant, c.style, c.mode,
+                                 c.antialiasing)
         ->UseManualTime()
         ->Iterations(3)
         ->Unit(benchmark::kMillisecond);

@@ -1,5 +1,7 @@
 #include "geometry/face_normals.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace sylva::geometry {
@@ -12,10 +14,17 @@ void set_normals_from_faces(Scene& scene, std::uint32_t first_vertex, std::uint3
   for (std::uint32_t k = 0; k + 2 < index_count; k += 3) {
     const std::uint32_t a = scene.indices[first_index + k], b = scene.indices[first_index + k + 1],
                         c = scene.indices[first_index + k + 2];
-    // The cross product's length is twice the area: larger faces weigh more.
-    const Vec3 n = cross(scene.positions[b] - scene.positions[a], scene.positions[c] - scene.positions[a]);
-    for (std::uint32_t v : {a, b, c})
-      if (v >= first_vertex && v < end) scene.normals[v] += n;
+    const Vec3 pa = scene.positions[a], pb = scene.positions[b], pc = scene.positions[c];
+    const Vec3 n = normalized(cross(pb - pa, pc - pa));
+    const std::uint32_t corner[3] = {a, b, c};
+    const Vec3 at[3] = {pa, pb, pc};
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = corner[k];
+      if (v < first_vertex || v >= end) continue;
+      const Vec3 e1 = normalized(at[(k + 1) % 3] - at[k]), e2 = normalized(at[(k + 2) % 3] - at[k]);
+      const float angle = std::acos(std::clamp(dot(e1, e2), -1.0f, 1.0f));
+      scene.normals[v] += n * angle;
+    }
   }
   for (std::size_t v = first_vertex; v < end; ++v) {
     const Vec3 n = scene.normals[v];

@@ -1,6 +1,7 @@
 // Smooth vertex normals for triangles that come without them (generalized
-// cylinders, meshes read without normals): each vertex gets the area-weighted
-// mean of the normals of the triangles around it.
+// cylinders, meshes read without normals): each vertex gets the mean of the
+// normals of the triangles around it, each weighted by the triangle's angle
+// at the vertex, so that how a surface is cut into triangles does not tilt it.
 #pragma once
 
 #include <cstdint>

@@ -62,13 +62,6 @@ class Batches {
   // Some colour used is partly transparent: blending is needed.
   bool transparent() const { return transparent_; }
 
-  // For handing the arrays over to OpenGL, which copies them: they can be
-  // freed (emptied) then, draws() staying as they are.
-  std::vector<MeshBatch>& meshes() { return meshes_; }
-  std::vector<geometry::Vec3>& line_positions() { return line_positions_; }
-  std::vector<Rgba8>& line_colors() { return line_colors_; }
-  std::vector<float>& line_depths() { return line_depths_; }
-
  private:
   void build_lines(const geometry::Scene& scene, const BatchOptions& options);
   void set_depths(const std::vector<std::vector<geometry::MeshPart>>& parts);

@@ -25,7 +25,30 @@ int sides_for(float radius_pixels, int fewest, int most) {
   return std::min(sides, most);
 }
 
+// A regular polygon of n sides inscribed in the unit circle: its area, and
+// its mean width (its perimeter over pi, the width averaged over directions).
+double polygon_area(int n) { return n * 0.5 * std::sin(2 * std::numbers::pi / n); }
+double polygon_width(int n) { return 2 * n * std::sin(std::numbers::pi / n) / std::numbers::pi; }
+
 }  // namespace
+
+geometry::Box drawn_bounds(const geometry::Scene& scene, geometry::LineStyle line_style) {
+  if (line_style != geometry::LineStyle::Pixel || scene.segments.empty()) return scene.bounds();
+  geometry::Scene others;
+  others.circles = scene.circles;
+  others.spheres = scene.spheres;
+  others.labels = scene.labels;
+  geometry::Box box = others.bounds();
+  for (const geometry::TriangleGroup& g : scene.groups) {
+    for (std::size_t k = g.first_index; k < std::size_t{g.first_index} + g.index_count && k < scene.indices.size(); ++k)
+      if (scene.indices[k] < scene.positions.size()) box.add(scene.positions[scene.indices[k]]);
+  }
+  for (const geometry::Segment& s : scene.segments) {
+    box.add(s.start);
+    box.add(s.end);
+  }
+  return box;
+}
 
 std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& scene, const geometry::Camera& camera,
                                                         const geometry::TessellationOptions& options,
@@ -67,18 +90,35 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
   full.indices = scene.indices;
   full.groups = scene.groups;
   if (!pixel_lines) {
-    for (std::size_t i = 0; i < scene.segments.size(); ++i)
-      by_sides[cylinders ? segment_sides[i] : most].segments.push_back(scene.segments[i]);
+    for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+      geometry::Segment s = scene.segments[i];
+      const int sides = cylinders ? segment_sides[i] : most;
+      // As wide on screen, on average over the ways it can turn, as with every side.
+      const auto scale = static_cast<float>(polygon_width(most) / polygon_width(sides));
+      s.start_width *= scale;
+      s.end_width *= scale;
+      by_sides[sides].segments.push_back(s);
+    }
   }
+  // Fewer sides inscribed in the same circle would cover less: the radius
+  // grows so that the primitive covers as much as it does with every side.
+  auto area_scale = [&](int sides) {
+    return static_cast<float>(std::sqrt(polygon_area(most) / polygon_area(sides)));
+  };
   for (std::size_t i = 0; i < scene.circles.size(); ++i) {
     geometry::Circle c = scene.circles[i];
     if (c.facing_viewer) {
       c.facing_viewer = false;
       c.normal = -camera.direction();
     }
+    c.radius *= area_scale(circle_sides[i]);
     by_sides[circle_sides[i]].circles.push_back(c);
   }
-  for (std::size_t i = 0; i < scene.spheres.size(); ++i) by_sides[sphere_sides[i]].spheres.push_back(scene.spheres[i]);
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+    geometry::Sphere s = scene.spheres[i];
+    s.radius *= area_scale(sphere_sides[i]);
+    by_sides[sphere_sides[i]].spheres.push_back(s);
+  }
 
   std::vector<geometry::TriangleMesh> meshes;
   for (auto& [sides, part] : by_sides) {

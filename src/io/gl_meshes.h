@@ -12,6 +12,10 @@
 
 namespace sylva::io::gl {
 
+// What the camera frames: Scene::bounds(), except that pixel-style segments
+// count as their end points, their widths being pixels rather than scene units.
+geometry::Box drawn_bounds(const geometry::Scene& scene, geometry::LineStyle line_style);
+
 // The Scene as one or more meshes (primitives tessellated with the same
 // number of sides share one), together everything tessellate() would make,
 // except that:

@@ -79,6 +79,7 @@ void set_lights(const std::vector<Light>& given, bool stationary, const geometry
   // would only brighten everything twice.
   const GLfloat none[4] = {0, 0, 0, 1};
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
+  // Leaves and other flat shapes are seen from both sides, and lit on both.
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   const int count = std::min(static_cast<int>(lights.size()), kMaxLights);
   for (int i = 0; i < count; ++i) {
@@ -179,54 +180,18 @@ void main() {
   GLuint program_ = 0;
 };
 
-// Copies `data` into a new buffer object and frees it: one array at a time
-// exists twice, never the whole scene.
-template <class T>
-GLuint upload(GLenum target, std::vector<T>& data) {
-  if (data.empty()) return 0;
-  GLuint buffer = 0;
-  glGenBuffers(1, &buffer);
-  glBindBuffer(target, buffer);
-  glBufferData(target, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
-  glBindBuffer(target, 0);
-  data = {};
-  return buffer;
-}
-
 // Issues the draw calls of `batches`, or just every triangle with no colour
-// (for the shadow passes), from buffer objects. The arrays of `batches` and
-// `meshes` move into OpenGL, leaving them empty.
+// (for the shadow passes). The arrays stay in client memory: llvmpipe reads
+// them where they are, where buffer objects would be copies.
 class SceneDrawer {
  public:
-  SceneDrawer(gl::Batches& batches, std::vector<geometry::TriangleMesh>& meshes, const geometry::Palette& palette,
-              bool lit, bool string_order, float polygon_line_width)
-      : draws_(batches.draws()),
+  SceneDrawer(const gl::Batches& batches, const geometry::Palette& palette, bool lit, bool string_order,
+              float polygon_line_width)
+      : batches_(batches),
         palette_(palette),
         lit_(lit),
         string_order_(string_order),
-        polygon_line_width_(polygon_line_width) {
-    for (std::size_t i = 0; i < meshes.size(); ++i) {
-      gl::MeshBatch& m = batches.meshes()[i];
-      Buffers& b = meshes_.emplace_back();
-      b.positions = upload(GL_ARRAY_BUFFER, meshes[i].positions);
-      b.shading = lit ? upload(GL_ARRAY_BUFFER, meshes[i].normals) : upload(GL_ARRAY_BUFFER, m.colors);
-      b.depths = upload(GL_ARRAY_BUFFER, m.depths);
-      b.indices = upload(GL_ELEMENT_ARRAY_BUFFER, m.indices);
-    }
-    lines_.positions = upload(GL_ARRAY_BUFFER, batches.line_positions());
-    lines_.shading = upload(GL_ARRAY_BUFFER, batches.line_colors());
-    lines_.depths = upload(GL_ARRAY_BUFFER, batches.line_depths());
-  }
-  ~SceneDrawer() {
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-    for (Buffers* b : all()) {
-      const GLuint names[4] = {b->positions, b->shading, b->depths, b->indices};
-      glDeleteBuffers(4, names);
-    }
-  }
-  SceneDrawer(const SceneDrawer&) = delete;
-  SceneDrawer& operator=(const SceneDrawer&) = delete;
+        polygon_line_width_(polygon_line_width) {}
 
   void draw() const {
     constexpr std::uint32_t kLines = ~0u;  // bound: the lines rather than a mesh
@@ -237,27 +202,28 @@ class SceneDrawer {
       if (width != line_width) glLineWidth(line_width = width);
     };
     glEnableClientState(GL_VERTEX_ARRAY);
-    for (const gl::Draw& d : draws_) {
+    for (const gl::Draw& d : batches_.draws()) {
       if (d.kind == gl::Draw::Kind::Triangles) {
+        const gl::MeshBatch& mesh = batches_.meshes()[d.mesh];
         if (bound != d.mesh) {
-          bind_mesh(meshes_[d.mesh]);
+          bind(mesh);
           if (lit_) glEnable(GL_LIGHTING);
           set_line_width(polygon_line_width_);
           bound = d.mesh;
         }
         if (lit_ && d.material != material) set_material(palette_, material = d.material);
-        draw_elements(d);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, mesh.indices.data() + d.first);
       } else {
         if (bound != kLines) {
           // Pixel lines have no surface to light: they keep their flat colour.
           glDisable(GL_LIGHTING);
           glDisableClientState(GL_NORMAL_ARRAY);
           glEnableClientState(GL_COLOR_ARRAY);
-          glBindBuffer(GL_ARRAY_BUFFER, lines_.positions);
-          glVertexPointer(3, GL_FLOAT, 0, nullptr);
-          glBindBuffer(GL_ARRAY_BUFFER, lines_.shading);
-          glColorPointer(4, GL_UNSIGNED_BYTE, 0, nullptr);
-          bind_depths(lines_);
+          glVertexPointer(3, GL_FLOAT, sizeof(Vec3), batches_.line_positions().data());
+          glColorPointer(4, GL_UNSIGNED_BYTE, 0, batches_.line_colors().data());
+          if (string_order_)
+            glVertexAttribPointer(StringOrderProgram::kDepthAttribute, 1, GL_FLOAT, GL_FALSE, 0,
+                                  batches_.line_depths().data());
           bound = kLines;
         }
         set_line_width(d.width);
@@ -274,62 +240,34 @@ class SceneDrawer {
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_NORMAL_ARRAY);
     std::uint32_t bound = ~0u;
-    for (const gl::Draw& d : draws_) {
+    for (const gl::Draw& d : batches_.draws()) {
       if (d.kind != gl::Draw::Kind::Triangles) continue;
-      if (bound != d.mesh) {
-        glBindBuffer(GL_ARRAY_BUFFER, meshes_[d.mesh].positions);
-        glVertexPointer(3, GL_FLOAT, 0, nullptr);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshes_[d.mesh].indices);
-        bound = d.mesh;
-      }
-      draw_elements(d);
+      const gl::MeshBatch& mesh = batches_.meshes()[d.mesh];
+      if (bound != d.mesh) glVertexPointer(3, GL_FLOAT, sizeof(Vec3), mesh.mesh->positions.data());
+      bound = d.mesh;
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, mesh.indices.data() + d.first);
     }
   }
 
  private:
-  struct Buffers {
-    GLuint positions = 0, shading = 0, depths = 0, indices = 0;  // shading: normals or colours
-  };
-
-  std::vector<Buffers*> all() {
-    std::vector<Buffers*> list{&lines_};
-    for (Buffers& b : meshes_) list.push_back(&b);
-    return list;
-  }
-
-  static void draw_elements(const gl::Draw& d) {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.first) * sizeof(std::uint32_t)));
-  }
-
-  void bind_mesh(const Buffers& b) const {
-    glBindBuffer(GL_ARRAY_BUFFER, b.positions);
-    glVertexPointer(3, GL_FLOAT, 0, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, b.shading);
+  void bind(const gl::MeshBatch& mesh) const {
+    glVertexPointer(3, GL_FLOAT, sizeof(Vec3), mesh.mesh->positions.data());
     if (lit_) {
       glDisableClientState(GL_COLOR_ARRAY);
       glEnableClientState(GL_NORMAL_ARRAY);
-      glNormalPointer(GL_FLOAT, 0, nullptr);
+      glNormalPointer(GL_FLOAT, sizeof(Vec3), mesh.mesh->normals.data());
     } else {
       glEnableClientState(GL_COLOR_ARRAY);
-      glColorPointer(4, GL_UNSIGNED_BYTE, 0, nullptr);
+      glColorPointer(4, GL_UNSIGNED_BYTE, 0, mesh.colors.data());
     }
-    bind_depths(b);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices);
+    if (string_order_)
+      glVertexAttribPointer(StringOrderProgram::kDepthAttribute, 1, GL_FLOAT, GL_FALSE, 0, mesh.depths.data());
   }
 
-  void bind_depths(const Buffers& b) const {
-    if (!string_order_) return;
-    glBindBuffer(GL_ARRAY_BUFFER, b.depths);
-    glVertexAttribPointer(StringOrderProgram::kDepthAttribute, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
-  }
-
-  std::vector<gl::Draw> draws_;
+  const gl::Batches& batches_;
   const geometry::Palette& palette_;
   bool lit_, string_order_;
   float polygon_line_width_;
-  std::vector<Buffers> meshes_;
-  Buffers lines_;
 };
 
 // The camera's image, box-filtered down by `factor` and turned top row first.
@@ -375,21 +313,19 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
   const bool pixel_lines = render.line_style == geometry::LineStyle::Pixel;
   const int factor = supersampling(render.antialiasing, width, height, kMaxSize);
 
-  const geometry::Box bounds = scene.bounds();
+  const geometry::Box bounds = gl::drawn_bounds(scene, render.line_style);
   const geometry::Camera camera(view, bounds, width, height);
   std::vector<geometry::TriangleMesh> meshes =
       gl::tessellate_for_view(scene, camera, {render.line_style, settings.contour_sides}, static_cast<float>(factor),
                               render.mode == Mode::Wireframe);
   if (!lit)
     for (auto& mesh : meshes) mesh.normals = {};
-  gl::Batches batches(scene, meshes, palette, {lit, string_order, pixel_lines, static_cast<float>(factor)});
+  const gl::Batches batches(scene, meshes, palette, {lit, string_order, pixel_lines, static_cast<float>(factor)});
 
   OffscreenContext context(width * factor, height * factor);
   const float polygon_line_width =
       render.mode == Mode::Wireframe ? std::max(render.wireframe_line_width, 1e-3f) * static_cast<float>(factor) : 1;
-  const SceneDrawer drawer(batches, meshes, palette, lit, string_order, polygon_line_width);
-  if (glGetError() == GL_OUT_OF_MEMORY) throw ModelError("out of memory rendering the image");
-  meshes = {};
+  const SceneDrawer drawer(batches, palette, lit, string_order, polygon_line_width);
 
   std::optional<gl::LightCamera> shadow_light;
   std::optional<gl::ShadowMapTexture> shadow_map;

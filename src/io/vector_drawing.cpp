@@ -8,6 +8,8 @@
 #include <numbers>
 #include <utility>
 
+#include "io/gl_meshes.h"
+
 namespace sylva::io {
 
 namespace {
@@ -79,7 +81,7 @@ class Projector {
     }
     return !all_near && !all_far;
   }
-  // A width of 0 still draws: as the thinnest line, as lpfg's pixel lines do.
+  // A width of 0 still draws, as the thinnest line.
   float pixels(float width, Vec3 where) const { return width > 0 ? width * camera_.pixels_per_unit_at(where) : 1; }
   Shape& add(Shape::Kind kind, int color, geometry::Provenance from, float depth) {
     Shape& s = out_.emplace_back();
@@ -118,6 +120,13 @@ void Projector::segment(const geometry::Segment& s) {
     // No length or no up to orient a strip by: drawn as a line instead.
   }
   Vec2 a = at(s.start), b = at(s.end);
+  if (line_style_ == geometry::LineStyle::Pixel) {
+    // As lpfg's glLineWidth, and the PNG renderer: the turtle's width in pixels, one per line.
+    Shape& line = add(Shape::Kind::Line, s.color, s.from, depth);
+    line.points = {a, b};
+    line.stroke = std::max(1.0f, s.start_width);
+    return;
+  }
   float wa = pixels(s.start_width, s.start), wb = pixels(s.end_width, s.end);
   if (std::fabs(wa - wb) <= 1e-3f * std::max(wa, wb)) {
     Shape& line = add(Shape::Kind::Line, s.color, s.from, depth);
@@ -203,7 +212,7 @@ void Projector::group(const geometry::TriangleGroup& g) {
     if (std::fabs(cross2(q[1] - q[0], q[2] - q[0])) < 1e-6f) continue;  // seen edge-on
     Shape& t = add(Shape::Kind::Polygon, g.color, g.from, camera_.view_distance((p[0] + p[1] + p[2]) / 3));
     t.points = {q[0], q[1], q[2]};
-    t.hide_seams = true;
+    t.hide_seams = t.opacity >= 1;  // overlapping outlines would show through a translucent surface
   }
 }
 
@@ -269,7 +278,8 @@ bool Projector::outline(const geometry::TriangleGroup& g) {
 Drawing project_scene(const geometry::Scene& scene, const geometry::Palette& palette,
                       const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
                       LineCap line_cap) {
-  const Camera camera(view, scene.bounds(), width, height);
+  // Framed as the PNG renderer frames it, so a drawing and an image of a model match.
+  const Camera camera(view, gl::drawn_bounds(scene, line_style), width, height);
   Drawing drawing;
   drawing.width = camera.width();
   drawing.height = camera.height();

@@ -14,8 +14,11 @@ namespace sylva::io {
 
 // Writes `scene` as seen through the camera of `view` in a width x height
 // drawing (one pixel is one point in PDF and PostScript), far primitives
-// first. Segments are lines of their width, or flat quads facing the turtle's
-// up vector for LineStyle::Polygon. SVG elements are grouped by the module
+// first. Segments are lines as wide as the turtle's width in pixels for
+// LineStyle::Pixel (lpfg's glLineWidth), lines of their width in world units
+// seen from the camera for LineStyle::Cylinder (a tapering one is the outline
+// such a line would cover), and flat quads facing the turtle's up vector for
+// LineStyle::Polygon. SVG elements are grouped by the module
 // that made them (data-index, data-module-id and, given `types`, data-module).
 // `ps_linecap` is the view file's "PS linecap:" (8.1.7; 0 butt, 1 round, 2
 // projecting), for every format; lpfg's default is butt, but round (the

@@ -15,7 +15,7 @@ namespace sylva::turtle {
 void TurtleInterpreter::Impl::check_contour(int id, const char* module) const {
   const std::size_t count = settings_.contours ? settings_.contours->size() : 0;
   if (id == 0 || (id >= 1 && static_cast<std::size_t>(id) <= count)) return;
-  throw ModelError(std::string(module) + ": there is no contour " + std::to_string(id) +
+  throw ModelError(std::string(module) + where() + ": there is no contour " + std::to_string(id) +
                    (count ? " (contours are 1 to " + std::to_string(count) + ", 0 is the circle)"
                           : " (no contour files are given; 0 is the circle)"));
 }

@@ -1,5 +1,6 @@
 #include "turtle/interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -37,14 +38,17 @@ constexpr Vec3 kVertical{0, 1, 0};
 
 }  // namespace
 
-TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene,
-                              std::string* trace)
-    : settings_(settings), types_(types), scene_(scene), trace_(trace) {
+TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, Scene* scene, std::string* trace)
+    : settings_(settings), scene_(scene), trace_(trace) {
   state_.width = settings.initial_width;
   state_.color = settings.initial_color;
   for (const Tropism& t : settings.tropisms) elasticity_.push_back(t.elasticity);
   elasticity_.push_back(settings.simple_tropism.elasticity);
   for (float e : elasticity_) bending_ = bending_ || e != 0;
+}
+
+std::string TurtleInterpreter::Impl::where() const {
+  return " (module " + std::to_string(from_.module_index) + " of the string)";
 }
 
 void TurtleInterpreter::Impl::note(const char* text) {
@@ -141,7 +145,7 @@ void TurtleInterpreter::Impl::apply_tropisms() {
     const float strength = length(t.direction);
     if (strength < kEpsilon) continue;
     const Vec3 toward = t.direction / strength;
-    const float intensity = k < n ? t.intensity : 1.0f;
+    const float intensity = t.intensity;
     if (t.torque) {
       // Twist around H, turning U toward T's part across H.
       const Vec3 across = toward - f.heading * dot(toward, f.heading);
@@ -461,7 +465,9 @@ void TurtleInterpreter::Impl::finish() {
 
 TurtleInterpreter::TurtleInterpreter(const TurtleSettings& settings, const ModuleTypes& types,
                                      geometry::Scene* scene, std::string* trace)
-    : impl_(new Impl(settings, types, scene, trace)) {}
+    : impl_(new Impl(settings, scene, trace)) {
+  (void)types;  // the turtle knows the predefined modules by id
+}
 
 TurtleInterpreter::~TurtleInterpreter() { delete impl_; }
 

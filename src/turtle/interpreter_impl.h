@@ -28,7 +28,7 @@ using geometry::Scene;
 inline constexpr float kEpsilon = 1e-5f;
 
 struct TurtleInterpreter::Impl {
-  Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene, std::string* trace);
+  Impl(const TurtleSettings& settings, Scene* scene, std::string* trace);
 
   void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
   void finish();
@@ -46,6 +46,8 @@ struct TurtleInterpreter::Impl {
   void change_elasticity(int id, float value, bool relative);
   void query(unsigned char* params, Vec3 value, bool in_string);
   void note(const char* text);
+  // " (module N of the string)", for errors.
+  std::string where() const;
   void note_position(const char* text, Vec3 p);
 
   // ---- shapes.cpp
@@ -80,7 +82,6 @@ struct TurtleInterpreter::Impl {
   void draw_cylinder(int index);
 
   const TurtleSettings& settings_;
-  const ModuleTypes& types_;
   Scene* scene_;
   std::string* trace_;
 

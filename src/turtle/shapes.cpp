@@ -174,7 +174,7 @@ geometry::Placement TurtleInterpreter::Impl::placement(Vec3 local_heading, Vec3 
 void TurtleInterpreter::Impl::surface(int id, Vec3 scale, const char* module) {
   const std::size_t count = settings_.surfaces ? settings_.surfaces->size() : 0;
   if (id < 0 || static_cast<std::size_t>(id) >= count)
-    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...): there is no surface " +
+    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...)" + where() + ": there is no surface " +
                      std::to_string(id) +
                      (count ? " (the view file gives surfaces 0 to " + std::to_string(count - 1) + ")"
                             : " (no view file gives surfaces)"));
@@ -194,7 +194,7 @@ void TurtleInterpreter::Impl::surface(int id, Vec3 scale, const char* module) {
 void TurtleInterpreter::Impl::mesh(int id, Vec3 scale, const char* module) {
   const std::size_t count = settings_.meshes ? settings_.meshes->size() : 0;
   if (id < 0 || static_cast<std::size_t>(id) >= count)
-    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...): there is no mesh " +
+    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...)" + where() + ": there is no mesh " +
                      std::to_string(id) +
                      (count ? " (the view file gives meshes 0 to " + std::to_string(count - 1) + ")"
                             : " (no view file gives meshes)"));
@@ -246,7 +246,7 @@ void TurtleInterpreter::Impl::dynamic_surface(const unsigned char* params) {
 void TurtleInterpreter::Impl::surface_point(int row, int column) {
   if (row < 0 || row > 3 || column < 0 || column > 3)
     throw ModelError("SurfacePoint(id, " + std::to_string(row) + ", " + std::to_string(column) +
-                     "): the control point's row and column go from 0 to 3");
+                     ")" + where() + ": the control point's row and column go from 0 to 3");
   lsystem_surface_.points[static_cast<std::size_t>(4 * row + column)] = state_.position;
   note_position(" = ", state_.position);
 }

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <set>
@@ -137,6 +139,47 @@ TEST(PngRenderer, PixelLinesAreTheirWidthInPixels) {
   const int wide = count_pixels(render(scene), kRed);
   EXPECT_GT(thin, 15);
   EXPECT_NEAR(wide, 5 * thin, thin);
+}
+
+TEST(PngRenderer, PixelWidthsDoNotWidenTheFrame) {
+  Scene scene;
+  geometry::Segment s;
+  s.start = {-1, 0, 0}, s.end = {1, 0, 0}, s.color = 2;
+  s.start_width = s.end_width = 20;  // pixels, not scene units
+  scene.segments.push_back(s);
+  geometry::ViewParameters view;
+  view.scale = 0.5f;
+  Image image = render(scene, {}, 100, 100, view);
+  int left = image.width, right = -1;
+  for (int x = 0; x < image.width; ++x)
+    if (image.pixel(x, 50) == kRed) left = std::min(left, x), right = std::max(right, x);
+  EXPECT_NEAR(right - left + 1, 50, 2);
+  EXPECT_EQ(image.pixel(50, 50 - 8), kRed);
+  EXPECT_EQ(image.pixel(50, 50 - 12), kBlack);
+}
+
+TEST(PngRenderer, SpheresAFewPixelsAcrossStillShow) {
+  Scene scene;
+  for (int i = 0; i < 5; ++i)
+    scene.spheres.push_back({{0.8f * static_cast<float>(i - 2), 0, 0}, 0.02f * static_cast<float>(i + 1), 3, module(i)});
+  for (RenderMode mode : {RenderMode::Filled, RenderMode::Wireframe, RenderMode::Shaded}) {
+    ImageSettings settings;
+    settings.render.mode = mode;
+    Image image = render(scene, settings, 200, 200);
+    // 50 pixels per unit: radii of 1 to 5 pixels, areas of about 3 to 80.
+    for (int i = 0; i < 5; ++i) {
+      int drawn = 0;
+      for (int y = 100 - 8; y < 100 + 8; ++y)
+        for (int x = 20 + 40 * i - 8; x < 20 + 40 * i + 8; ++x) drawn += image.pixel(x, y) != kBlack;
+      const double area = 3.14159 * (i + 1) * (i + 1);
+      EXPECT_GE(drawn, area * 0.6) << i << " " << static_cast<int>(mode);
+      EXPECT_LE(drawn, area * 1.4 + 2) << i << " " << static_cast<int>(mode);
+    }
+  }
+  // A big one keeps all 16 sides: its outline is the 16-gon's.
+  scene.spheres = {{{0, 0, 0}, 1.9f, 2, module(0)}};
+  const double r = 1.9 * 50, area = 8 * std::sin(3.14159 / 8) * r * r;
+  EXPECT_NEAR(count_pixels(render(scene, {}, 200, 200), kRed), area, 0.005 * area);
 }
 
 TEST(PngRenderer, ZBufferHidesTheFarTriangle) {

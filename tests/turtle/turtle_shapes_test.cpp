@@ -225,6 +225,7 @@ TEST(TurtleSurface, UnknownIdIsAClearError) {
     const std::string what = e.what();
     EXPECT_NE(what.find("Surface(5"), std::string::npos) << what;
     EXPECT_NE(what.find("no surface 5"), std::string::npos) << what;
+    EXPECT_NE(what.find("module 1 of the string"), std::string::npos) << what;
   }
   EXPECT_THROW(draw("surface-none", "Surface(0, 1)"), ModelError);
 }
