@@ -14,6 +14,8 @@
 //   png_s        write_png: encoding and writing the file.
 //   peak_RSS_MB  getrusage's ru_maxrss for the whole process: run one
 //                benchmark per process (bench/run.sh does) to read it.
+//   scene_RSS_MB the same once the Scene is built, before any rendering:
+//                what rendering adds is the difference.
 // The benchmark's own time is the two together.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -75,8 +77,8 @@ Scene plant(bool pixel_widths) {
     for (float side : {-1.0f, 1.0f}) {
       Vec3 heading = rotate(n.heading, left, side * 0.45f);
       Vec3 up = rotate(rotate(n.up, left, side * 0.45f), heading, 1.5708f);
-      stack.push_back({s.end, sylva::geometry::normalized(heading), sylva::geometry::normalized(up), n.length * 0.8f,
-                       n.depth + 1});
+      stack.push_back(
+          {s.end, sylva::geometry::normalized(heading), sylva::geometry::normalized(up), n.length * 0.8f, n.depth + 1});
     }
   }
   return scene;
@@ -91,6 +93,7 @@ double peak_rss_mb() {
 void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, sylva::io::RenderMode mode,
                   int antialiasing) {
   const Scene scene = plant(style == sylva::geometry::LineStyle::Pixel);
+  const double scene_rss_mb = peak_rss_mb();
   sylva::geometry::Palette palette = sylva::geometry::Palette::default_palette();
   palette.entries[0].diffuse = {1, 1, 1};
   palette.entries[2].diffuse = palette.entries[2].ambient = {0.45f, 0.3f, 0.15f};
@@ -105,7 +108,8 @@ void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, syl
   settings.render.line_style = style;
   settings.render.mode = mode;
   settings.render.antialiasing = antialiasing;
-  const std::string path = (std::filesystem::temp_directory_path() / ("sylva-render-bench-" + std::to_string(getpid()) + ".png")).string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("sylva-render-bench-" + std::to_string(getpid()) + ".png")).string();
   double render_s = 0, png_s = 0;
   for (auto _ : state) {
     auto t0 = Clock::now();
@@ -124,6 +128,7 @@ void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, syl
   state.counters["segments"] = static_cast<double>(scene.segments.size());
   state.counters["spheres"] = static_cast<double>(scene.spheres.size());
   state.counters["peak_RSS_MB"] = peak_rss_mb();
+  state.counters["scene_RSS_MB"] = scene_rss_mb;
 }
 
 void register_render_benchmarks() {

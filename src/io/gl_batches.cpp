@@ -56,7 +56,8 @@ Batches::Batches(const geometry::Scene& scene, std::vector<geometry::TriangleMes
       batch.colors.resize(meshes[m].positions.size());
       for (const MeshPart& p : parts[m]) {
         const Rgba8 c = to_rgba8(palette.color(p.color), palette.at(p.color).transparency);
-        for (std::uint32_t k = p.first_index; k < p.first_index + p.index_count; ++k) batch.colors[batch.indices[k]] = c;
+        for (std::uint32_t k = p.first_index; k < p.first_index + p.index_count; ++k)
+          batch.colors[batch.indices[k]] = c;
       }
     }
   }
@@ -78,7 +79,8 @@ void Batches::build_lines(const geometry::Scene& scene, const BatchOptions& opti
   // lpfg's pixel lines are glLineWidth(width) wide: the turtle's width in pixels.
   auto width_of = [&](std::uint32_t i) { return std::max(1.0f, segments[i].start_width) * options.line_scale; };
   // One draw call per width: models use a handful of widths, often one.
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return width_of(a) < width_of(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return width_of(a) < width_of(b); });
   line_positions_.reserve(2 * order.size());
   line_colors_.reserve(2 * order.size());
   line_widths_.reserve(order.size());

@@ -51,8 +51,8 @@ geometry::Box drawn_bounds(const geometry::Scene& scene, geometry::LineStyle lin
 }
 
 std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& scene, const geometry::Camera& camera,
-                                                        const geometry::TessellationOptions& options,
-                                                        float pixel_scale, bool every_side) {
+                                                        const geometry::TessellationOptions& options, float pixel_scale,
+                                                        bool every_side) {
   using geometry::LineStyle;
   const int most = std::max(3, options.contour_sides);
   const bool facing = std::any_of(scene.circles.begin(), scene.circles.end(),
@@ -102,9 +102,7 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
   }
   // Fewer sides inscribed in the same circle would cover less: the radius
   // grows so that the primitive covers as much as it does with every side.
-  auto area_scale = [&](int sides) {
-    return static_cast<float>(std::sqrt(polygon_area(most) / polygon_area(sides)));
-  };
+  auto area_scale = [&](int sides) { return static_cast<float>(std::sqrt(polygon_area(most) / polygon_area(sides))); };
   for (std::size_t i = 0; i < scene.circles.size(); ++i) {
     geometry::Circle c = scene.circles[i];
     if (c.facing_viewer) {

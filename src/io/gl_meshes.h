@@ -23,10 +23,12 @@ geometry::Box drawn_bounds(const geometry::Scene& scene, geometry::LineStyle lin
 //  - a cylinder, disc or sphere whose outline on screen would stray less
 //    than half a pixel from the true circle with fewer sides than
 //    `options.contour_sides` gets fewer (at least 3 for cylinders, 4 for the
-//    others). `pixel_scale` is the image's pixels per camera pixel
-//    (supersampling). With `every_side` (a wireframe shows the sides), none do.
+//    others), and grows a little so as to cover as much of the image as it
+//    would with every side. `pixel_scale` is the pixels drawn per pixel of
+//    the camera's image (supersampling). With `every_side` (a wireframe
+//    shows the sides), none does.
 std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& scene, const geometry::Camera& camera,
-                                                        const geometry::TessellationOptions& options,
-                                                        float pixel_scale, bool every_side);
+                                                        const geometry::TessellationOptions& options, float pixel_scale,
+                                                        bool every_side);
 
 }  // namespace sylva::io::gl

@@ -1,3 +1,5 @@
+// libOSMesa exports OpenGL's later entry points (shaders, framebuffers)
+// directly: declared, they need no glXGetProcAddress-style lookup.
 #define GL_GLEXT_PROTOTYPES
 #include "io/gl_shadows.h"
 
@@ -121,7 +123,8 @@ ShadowMapTexture::ShadowMapTexture(int size) {
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteTextures(1, &texture_);
-    throw ModelError("cannot make a shadow map of " + std::to_string(size_) + " x " + std::to_string(size_) + " texels");
+    throw ModelError("cannot make a shadow map of " + std::to_string(size_) + " x " + std::to_string(size_) +
+                     " texels");
   }
 }
 

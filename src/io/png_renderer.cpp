@@ -1,7 +1,10 @@
+// libOSMesa exports OpenGL's later entry points (shaders, framebuffers)
+// directly: declared, they need no glXGetProcAddress-style lookup.
 #define GL_GLEXT_PROTOTYPES
 #include "io/png_renderer.h"
 
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/osmesa.h>
 
 #include <algorithm>
@@ -31,7 +34,9 @@ constexpr int kMaxSupersampling = 4;
 class OffscreenContext {
  public:
   OffscreenContext(int width, int height)
-      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+      : width_(width),
+        height_(height),
+        pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
     context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!context_) throw ModelError("cannot create an offscreen OpenGL context (OSMesa)");
     if (!OSMesaMakeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, width, height)) {
@@ -87,9 +92,9 @@ void set_lights(const std::vector<Light>& given, bool stationary, const geometry
     const GLenum id = GL_LIGHT0 + static_cast<GLenum>(i);
     auto rgba = [](const Rgb& c) { return std::array<GLfloat, 4>{c.r, c.g, c.b, 1}; };
     glEnable(id);
-    const std::array<GLfloat, 4> position =
-        l.kind == Light::Kind::Directional ? std::array<GLfloat, 4>{l.direction.x, l.direction.y, l.direction.z, 0}
-                                           : std::array<GLfloat, 4>{l.position.x, l.position.y, l.position.z, 1};
+    const std::array<GLfloat, 4> position = l.kind == Light::Kind::Directional
+                                                ? std::array<GLfloat, 4>{l.direction.x, l.direction.y, l.direction.z, 0}
+                                                : std::array<GLfloat, 4>{l.position.x, l.position.y, l.position.z, 1};
     glLightfv(id, GL_POSITION, position.data());
     glLightfv(id, GL_AMBIENT, rgba(l.ambient).data());
     glLightfv(id, GL_DIFFUSE, rgba(l.diffuse).data());
@@ -290,7 +295,8 @@ Image read_image(const OffscreenContext& context, int factor) {
           sum[0] += p[0], sum[1] += p[1], sum[2] += p[2];
         }
       }
-      for (unsigned s : sum) *out++ = static_cast<std::uint8_t>((s + static_cast<unsigned>(samples) / 2) / static_cast<unsigned>(samples));
+      for (unsigned s : sum)
+        *out++ = static_cast<std::uint8_t>((s + static_cast<unsigned>(samples) / 2) / static_cast<unsigned>(samples));
     }
   }
   return image;
@@ -298,8 +304,8 @@ Image read_image(const OffscreenContext& context, int factor) {
 
 }  // namespace
 
-Image render_image(const geometry::Scene& scene, const geometry::Palette& palette,
-                   const geometry::ViewParameters& view, const ImageSettings& settings, int width, int height) {
+Image render_image(const geometry::Scene& scene, const geometry::Palette& palette, const geometry::ViewParameters& view,
+                   const ImageSettings& settings, int width, int height) {
   // Lower than any OpenGL implementation's limit, so the check can come
   // before a context exists.
   constexpr int kMaxSize = 16384;
@@ -367,7 +373,8 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
 
   drawer.draw();
   glDisable(GL_BLEND);
-  if (shadow_map) shadow_map->darken(*shadow_light, camera.view(), render.shadow_map.color, [&] { drawer.draw_positions_only(); });
+  if (shadow_map)
+    shadow_map->darken(*shadow_light, camera.view(), render.shadow_map.color, [&] { drawer.draw_positions_only(); });
 
   glFinish();
   const GLenum error = glGetError();

@@ -31,16 +31,23 @@ struct Image {
 // rendering commands (z buffer, render mode, shadow map, stationary lights,
 // antialiasing, line style, wireframe line width, backface culling), the
 // lights and the contour sides.
-//  - The depth test is on when `z_buffer` is, and always in the shaded and
-//    shadows modes.
+//  - Without the z buffer later modules of the string cover earlier ones, as
+//    lpfg draws them; with it (always on in the shaded and shadows modes)
+//    nearer surfaces cover farther ones.
 //  - At most 8 lights are used; none stands for lpfg's single directional
 //    light from +z (Light{}). Stationary lights are fixed in the scene;
-//    others are in eye coordinates, moving with the camera.
-//  - Pixel-style segments are lines their width in pixels wide and unlit;
-//    polygon and cylinder segments are triangles (see tessellate).
+//    others are in eye coordinates, moving with the camera. Lit, a colormap
+//    colour (Palette::from_materials false) reflects a quarter of it as
+//    ambient light; a material file's materials are used whole.
+//  - Pixel-style segments are unlit lines their width in pixels wide, and
+//    the camera frames their end points; polygon and cylinder segments are
+//    triangles (see tessellate).
+//  - Shapes a few pixels across get fewer sides than `contour_sides` where
+//    that cannot be seen (see gl::tessellate_for_view), except in wireframe.
 //  - Antialiasing n > 1 draws the image ceil(sqrt(n)) times larger each way
 //    (at most 4) and averages it down.
-//  - Shadows are cast from the first directional or spot light only.
+//  - Shadows are cast from the first directional or spot light only, and
+//    multiply what lies in them by the shadow map's colour.
 struct ImageSettings {
   RenderSettings render;
   std::vector<Light> lights;
@@ -50,11 +57,11 @@ struct ImageSettings {
 // Draws `scene` through the camera of `view` into a width x height image on
 // the palette's background (colour index 0). Labels are not drawn. Throws
 // ModelError when OpenGL cannot be set up or the image is too large for it.
-Image render_image(const geometry::Scene& scene, const geometry::Palette& palette,
-                   const geometry::ViewParameters& view, const ImageSettings& settings, int width, int height);
+Image render_image(const geometry::Scene& scene, const geometry::Palette& palette, const geometry::ViewParameters& view,
+                   const ImageSettings& settings, int width, int height);
 
-// Writes `image` as an 8-bit RGB PNG, whole or not at all. Throws ModelError
-// naming the path when it cannot be written.
+// Writes `image` as an 8-bit RGB PNG, whole or not at all ("-": to standard
+// output). Throws ModelError naming the path when it cannot be written.
 void write_png(const std::string& path, const Image& image);
 
 }  // namespace sylva::io

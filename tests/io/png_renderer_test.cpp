@@ -36,7 +36,9 @@ constexpr Pixel kBlack{0, 0, 0}, kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0,
 // Black background; 2 red, 3 green, 4 blue, 5 white.
 geometry::Palette test_palette() {
   geometry::Palette p = geometry::Palette::default_palette();
-  auto set = [&](int i, Rgb c) { p.entries[static_cast<std::size_t>(i)].diffuse = p.entries[static_cast<std::size_t>(i)].ambient = c; };
+  auto set = [&](int i, Rgb c) {
+    p.entries[static_cast<std::size_t>(i)].diffuse = p.entries[static_cast<std::size_t>(i)].ambient = c;
+  };
   set(0, {0, 0, 0});
   set(2, {1, 0, 0});
   set(3, {0, 1, 0});
@@ -58,9 +60,8 @@ geometry::Provenance module(std::uint32_t index) { return {index, 0}; }
 // A triangle in the plane z, counter-clockwise seen from +z, covering the
 // centre of the view.
 void add_triangle(Scene& scene, float z, int color, std::uint32_t index, float size = 1.5f) {
-  scene.add_triangles(geometry::TriangleGroup::Kind::Triangle,
-                      {{-size, -size, z}, {size, -size, z}, {0, size, z}}, {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}},
-                      {0, 1, 2}, color, module(index));
+  scene.add_triangles(geometry::TriangleGroup::Kind::Triangle, {{-size, -size, z}, {size, -size, z}, {0, size, z}},
+                      {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, {0, 1, 2}, color, module(index));
 }
 
 Image render(const Scene& scene, const ImageSettings& settings = {}, int width = 80, int height = 60,
@@ -161,7 +162,8 @@ TEST(PngRenderer, PixelWidthsDoNotWidenTheFrame) {
 TEST(PngRenderer, SpheresAFewPixelsAcrossStillShow) {
   Scene scene;
   for (int i = 0; i < 5; ++i)
-    scene.spheres.push_back({{0.8f * static_cast<float>(i - 2), 0, 0}, 0.02f * static_cast<float>(i + 1), 3, module(i)});
+    scene.spheres.push_back(
+        {{0.8f * static_cast<float>(i - 2), 0, 0}, 0.02f * static_cast<float>(i + 1), 3, module(i)});
   for (RenderMode mode : {RenderMode::Filled, RenderMode::Wireframe, RenderMode::Shaded}) {
     ImageSettings settings;
     settings.render.mode = mode;
@@ -252,6 +254,54 @@ TEST(PngRenderer, ShadedSphereIsBrighterOnTheLitSide) {
   settings.lights[0].direction = {-1, 0, 0};
   Image left = render(scene, settings, 81, 61);
   EXPECT_GT(brightness(left.pixel(40 - 12, y)), brightness(left.pixel(40 + 12, y)) + 200);
+}
+
+TEST(PngRenderer, PointAndSpotLights) {
+  Scene scene;
+  scene.spheres.push_back({{0, 0, 0}, 1.5f, 5, module(0)});
+  ImageSettings settings;
+  settings.render.mode = RenderMode::Shaded;
+  settings.contour_sides = 32;
+  io::Light point;
+  point.kind = io::Light::Kind::Point;
+  point.position = {-4, 0, 0};  // at screen left
+  settings.lights = {point};
+  Image image = render(scene, settings, 81, 61);
+  EXPECT_GT(brightness(image.pixel(40 - 15, 30)), brightness(image.pixel(40 + 15, 30)) + 200);
+
+  // A spotlight from the eye's side, narrow and aimed past the sphere, leaves
+  // only the ambient term; aimed at it, it lights its middle.
+  io::Light spot;
+  spot.kind = io::Light::Kind::Spot;
+  spot.position = {0, 0, 10};
+  spot.direction = {1, 0, -1};
+  spot.spot_cutoff = 10;
+  settings.lights = {spot};
+  const int away = brightness(render(scene, settings, 81, 61).pixel(40, 30));
+  settings.lights[0].direction = {0, 0, -1};
+  const int at = brightness(render(scene, settings, 81, 61).pixel(40, 30));
+  EXPECT_GT(at, away + 300);
+}
+
+TEST(PngRenderer, TransparentMaterialsBlend) {
+  Scene scene;
+  add_triangle(scene, 0, 2, 0);
+  geometry::Palette palette = test_palette();
+  palette.entries[2].transparency = 0.5f;
+  Image image = io::render_image(scene, palette, test_view(), {}, 80, 60);
+  const Pixel c = centre(image);
+  EXPECT_NEAR(c[0], 128, 2);
+  EXPECT_EQ(c[1], 0);
+}
+
+TEST(PngRenderer, BackfaceCullingDropsTrianglesFacingAway) {
+  Scene scene;
+  scene.add_triangles(geometry::TriangleGroup::Kind::Triangle, {{-1.5f, -1.5f, 0}, {0, 1.5f, 0}, {1.5f, -1.5f, 0}},
+                      {{0, 0, -1}, {0, 0, -1}, {0, 0, -1}}, {0, 1, 2}, 2, module(0));  // clockwise as seen
+  ImageSettings settings;
+  EXPECT_EQ(centre(render(scene, settings)), kRed);
+  settings.render.backface_culling = true;
+  EXPECT_EQ(centre(render(scene, settings)), kBlack);
 }
 
 TEST(PngRenderer, MaterialsGiveSpecularHighlights) {
