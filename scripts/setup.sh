@@ -9,7 +9,7 @@ PACKAGES=(
   libbenchmark-dev            # bench/
   pkg-config libcairo2-dev libosmesa6-dev libpng-dev   # vector drawings, offscreen OpenGL, PNG
   libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
-  libassimp-dev poppler-utils                          # tests read meshes and PDFs back
+  libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
 )
 
 missing=()

@@ -106,19 +106,7 @@ geometry::Contour read_contour_file(const std::string& path) {
 }
 
 std::vector<geometry::Contour> read_contour_set_file(const std::string& path) {
-  WordReader in(path, read_input_file(path, "contour set file"));
-  in.expect("contourgalleryver");
-  in.integer("the major version");
-  in.integer("the minor version");
-  in.expect("items:");
-  Word count_word = in.peek();
-  int count = in.integer("the number of contours");
-  if (count < 0) in.fail(count_word, "expected a number of contours, found '" + count_word.text + "'");
-  std::vector<geometry::Contour> contours;
-  for (int i = 0; i < count; ++i)
-    contours.push_back(read_cuspy(in, stem_of(path) + "_" + std::to_string(i + 1)));
-  if (!in.at_end()) in.expected("the end of the contour set (it has " + std::to_string(count) + " items)");
-  return contours;
+  return read_gallery<geometry::Contour>(path, "contour", "contour", read_cuspy);
 }
 
 }  // namespace sylva::io

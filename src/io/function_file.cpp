@@ -77,19 +77,7 @@ geometry::Function read_function_file(const std::string& path) {
 }
 
 std::vector<geometry::Function> read_function_set_file(const std::string& path) {
-  WordReader in(path, read_input_file(path, "function set file"));
-  in.expect("funcgalleryver");
-  in.integer("the major version");
-  in.integer("the minor version");
-  in.expect("items:");
-  Word count_word = in.peek();
-  int count = in.integer("the number of functions");
-  if (count < 0) in.fail(count_word, "expected a number of functions, found '" + count_word.text + "'");
-  std::vector<geometry::Function> functions;
-  for (int i = 0; i < count; ++i)
-    functions.push_back(read_funcedit(in, stem_of(path) + "_" + std::to_string(i + 1)));
-  if (!in.at_end()) in.expected("the end of the function set (it has " + std::to_string(count) + " items)");
-  return functions;
+  return read_gallery<geometry::Function>(path, "func", "function", read_funcedit);
 }
 
 }  // namespace sylva::io

@@ -95,4 +95,24 @@ struct Command {
 // std::nullopt for a blank line; a command without a colon has only a name.
 std::optional<Command> split_command(std::string_view line, int line_number);
 
+// A gallery file of the tools (.cset, .fset): "<kind>galleryver M m",
+// "items: N", then N items, each read by read_item(in, default_name).
+template <class Item, class ReadItem>
+std::vector<Item> read_gallery(const std::string& path, const std::string& kind, const std::string& item_name,
+                               ReadItem read_item) {
+  WordReader in(path, read_input_file(path, item_name + " set file"));
+  in.expect(kind + "galleryver");
+  in.integer("the major version");
+  in.integer("the minor version");
+  in.expect("items:");
+  Word count_word = in.peek();
+  int count = in.integer("the number of " + item_name + "s");
+  if (count < 0) in.fail(count_word, "expected a number of " + item_name + "s, found '" + count_word.text + "'");
+  std::vector<Item> items;
+  for (int i = 0; i < count; ++i) items.push_back(read_item(in, stem_of(path) + "_" + std::to_string(i + 1)));
+  if (!in.at_end())
+    in.expected("the end of the " + item_name + " set (it has " + std::to_string(count) + " items)");
+  return items;
+}
+
 }  // namespace sylva::io

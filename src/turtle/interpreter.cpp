@@ -63,21 +63,24 @@ void TurtleInterpreter::Impl::note_position(const char* text, Vec3 p) {
 
 // ---- moving and drawing lines --------------------------------------------------
 
+void TurtleInterpreter::Impl::add_segment(Vec3 from, Vec3 to) {
+  if (!scene_) return;
+  geometry::Segment s;
+  s.start = from;
+  s.end = to;
+  s.up = state_.frame.up;
+  s.start_width = s.end_width = state_.width;
+  s.color = state_.color;
+  s.from = from_;
+  scene_->segments.push_back(s);
+}
+
 void TurtleInterpreter::Impl::forward(float distance, bool draw, bool polygon_vertex_too) {
   const Vec3 start = state_.position;
   const Vec3 end = start + state_.frame.heading * distance;
   state_.position = end;
   // Inside a generalized cylinder the cylinder is the drawing.
-  if (draw && scene_ && distance != 0 && !cylinder_open(state_)) {
-    geometry::Segment s;
-    s.start = start;
-    s.end = end;
-    s.up = state_.frame.up;
-    s.start_width = s.end_width = state_.width;
-    s.color = state_.color;
-    s.from = from_;
-    scene_->segments.push_back(s);
-  }
+  if (draw && distance != 0 && !cylinder_open(state_)) add_segment(start, end);
   if (trace_) {
     note_position(" from ", start);
     note_position(" to ", end);
@@ -109,16 +112,7 @@ void TurtleInterpreter::Impl::line(Vec3 from, Vec3 to) {
     note(" ignored: no distance");
     return;
   }
-  if (scene_) {
-    geometry::Segment s;
-    s.start = from;
-    s.end = to;
-    s.up = state_.frame.up;
-    s.start_width = s.end_width = state_.width;
-    s.color = state_.color;
-    s.from = from_;
-    scene_->segments.push_back(s);
-  }
+  add_segment(from, to);
   note_position(" from ", from);
   note_position(" to ", to);
   state_.position = to;

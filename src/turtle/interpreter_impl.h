@@ -36,6 +36,8 @@ struct TurtleInterpreter::Impl {
   // ---- interpreter.cpp
   void forward(float distance, bool draw, bool polygon_vertex);
   void move_to(Vec3 target);
+  // A drawn line with the turtle's width, colour and up vector.
+  void add_segment(Vec3 from, Vec3 to);
   void line(Vec3 from, Vec3 to);
   Vec3 to_world(Vec3 p) const;
   Vec3 to_world_offset(Vec3 d) const;
