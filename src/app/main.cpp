@@ -27,6 +27,9 @@ void add_build_options(CLI::App& command, CommonOptions& o) {
   command.add_option("-D,--define", o.build.defines, "Preprocessor definition NAME[=VALUE] for the model")
       ->type_name("NAME[=VALUE]");
   command.add_flag("-v,--verbose", o.build.verbose, "Say when a model is compiled");
+  command.add_option("--lang", o.build.language, "The model's language (default: recognised from the file)")
+      ->check(CLI::IsMember({"cpfg", "lc", "auto"}))
+      ->type_name("cpfg|lc");
 }
 
 struct RunOptions {

@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped whenever generated code or the runtime's contract changes.
-constexpr const char* kCacheFormat = "sylva-model-cache-4";
+constexpr const char* kCacheFormat = "sylva-model-cache-5";
 
 const std::vector<std::string> kCompileFlags = {
     "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",
@@ -79,6 +79,7 @@ struct ResolvedOptions {
   fs::path cache_dir;
   std::string runtime;
   std::vector<std::string> defines;
+  std::string language;
 };
 
 ResolvedOptions resolve(const BuildOptions& options) {
@@ -87,11 +88,12 @@ ResolvedOptions resolve(const BuildOptions& options) {
   r.cache_dir = options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
   r.runtime = options.runtime_include_dir.empty() ? default_runtime_include_dir() : options.runtime_include_dir;
   r.defines = options.defines;
+  r.language = options.language;
   return r;
 }
 
 lang::TranslatorOptions translator_options(const ResolvedOptions& r) {
-  return lang::TranslatorOptions{r.compiler, r.runtime, r.defines};
+  return lang::TranslatorOptions{r.compiler, r.runtime, r.defines, r.language.empty() ? "auto" : r.language};
 }
 
 // The key of the direct lookup: the model file itself and the tools.
@@ -104,6 +106,7 @@ std::string direct_key(const std::string& model_path, const std::string& source,
   h.add(file_stamp(find_in_path(r.compiler)));
   h.add(r.runtime);
   for (const std::string& d : r.defines) h.add(d);
+  h.add("language=" + r.language);
   return h.hex();
 }
 

@@ -14,6 +14,7 @@ struct BuildOptions {
   std::string runtime_include_dir;  // empty: the runtime this program was built with
   std::vector<std::string> defines;
   bool verbose = false;             // say what is being done on stderr
+  std::string language;             // empty or "auto": recognised; "cpfg" or "lc"
 };
 
 struct BuiltModel {

@@ -97,7 +97,7 @@ void Derivation::begin() {
   if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
   string_.clear();
   model_.axiom(string_.buffer());
-  decompose();
+  if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
   if (uses_query_modules_ && query_pass_) query_pass_(*this);
   begun_ = true;
 }
@@ -270,9 +270,11 @@ void Derivation::derive_forward() {
   auto flush = [&] {
     if (pos > run) next_.append(src.data + run, pos - run);
   };
+  const auto before_module = model_.before_module;
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     const bool cut = id == rt::mid::Cut;
+    if (before_module && !cut) before_module(id);
     if (!cut && rules_.forward(RuleKind::Production, id).empty()) {
       pos = src.next(pos);
       continue;

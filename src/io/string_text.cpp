@@ -8,7 +8,7 @@ std::string format_string(const ModuleString& string, const ModuleTypes& types) 
   const StringView v = string.view(types);
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
     const ModuleId id = v.id_at(at);
-    if (at != v.begin) text += ' ';
+    if (at != v.begin && !types.cpfg()) text += ' ';  // cpfg: no separators
     text += types.name(id);
     if (types[id].param_size > 0) {
       text += '(';

@@ -1,6 +1,7 @@
 // The text form of a string: modules separated by spaces, each as its name or
 // Name(p1,p2,...), numbers printed so they read back exactly (float %.9g,
-// double %.17g, structs as {field=value,...}).
+// double %.17g, structs as {field=value,...}). cpfg models are written as cpfg
+// writes them: modules concatenated, parameters as %g of a float.
 #pragma once
 
 #include <string>

@@ -194,7 +194,7 @@ class CppGenerator {
         const ModuleDecl& decl = module(m.name);
         std::string types = join_types(decl.param_types);
         for (std::size_t k = 0; k < m.formals.size(); ++k) {
-          text += " " + decl.param_types[k] + " " + m.formals[k] + " = ::sylva::rt::param<" + std::to_string(k) +
+          text += " " + (model_.cpfg ? std::string("double") : decl.param_types[k]) + " " + m.formals[k] + " = ::sylva::rt::param<" + std::to_string(k) +
                   ", " + types + ">(sylva_params[" + std::to_string(slot) + "]); (void)" + m.formals[k] + ";";
         }
         ++slot;
@@ -246,8 +246,15 @@ class CppGenerator {
     const std::size_t predefined = predefined_modules().size();
     for (std::size_t k = 0; k < model_.modules.size(); ++k) {
       const ModuleDecl& m = model_.modules[k];
+      const std::string& shown = m.display_name.empty() ? m.name : m.display_name;
+      if (model_.cpfg && k >= predefined) {
+        // cpfg prints every parameter as %g of its float.
+        t += "  ::sylva::abi::ModuleType{" + quoted(shown) + ", " + std::to_string(4 * m.param_types.size()) +
+             "u, &sylva_cpfg_format<" + std::to_string(m.param_types.size()) + ">},\n";
+        continue;
+      }
       t += std::string("  ::sylva::rt::") + (k < predefined ? "predefined_module_type<" : "module_type<") +
-           join_types(m.param_types) + ">(" + quoted(m.name) + "),\n";
+           join_types(m.param_types) + ">(" + quoted(shown) + "),\n";
     }
     t += "};\n";
     for (std::size_t k = 0; k < model_.filters.size(); ++k) {
@@ -291,6 +298,8 @@ class CppGenerator {
     t += "    " + fn(settings_[Setting::kDerivationLength]) + ", " + fn(settings_[Setting::kDecompositionDepth]) +
          ", " + fn(settings_[Setting::kInterpretationDepth]) + ", " + fn(settings_[Setting::kRing]) + ",\n";
     t += "    " + fn(control_[0]) + ", " + fn(control_[1]) + ", " + fn(control_[2]) + ", " + fn(control_[3]) + ",\n";
+    t += std::string("    ") + (model_.cpfg ? "::sylva::abi::kModelCpfg" : "0") + ", " +
+         (model_.cpfg_stochastic ? "&sylva_cpfg_before_module" : "nullptr") + ",\n";
     t += "  };\n  return &descriptor;\n}\n";
     out_.block(t);
   }

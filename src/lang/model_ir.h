@@ -23,6 +23,9 @@ struct ModuleDecl {
   std::string name;
   std::vector<std::string> param_types;  // as written: "float", "CellData"
   Token at;
+  // The name strings print (empty: `name`); cpfg symbols such as "+" or "?E"
+  // have a C++-safe `name` and their own symbol here.
+  std::string display_name;
 };
 
 // `Name(arg, ...)` in an axiom or a produce statement.
@@ -98,6 +101,11 @@ struct Model {
   std::vector<ContextFilter> filters;  // referred to by Rule::filter
   // Modules the generator must know: the predefined ones, then the model's.
   std::vector<ModuleDecl> modules;
+  // A cpfg model: formal parameters are doubles, parameters print as cpfg
+  // prints them, the descriptor says so (abi::kModelCpfg).
+  bool cpfg = false;
+  // cpfg's stochastic draw: the model defines sylva_cpfg_before_module.
+  bool cpfg_stochastic = false;
 };
 
 // The predefined modules of lpfgall.h, in id order.

@@ -21,7 +21,7 @@ std::vector<std::string> split_types(const char* list) {
 const std::vector<ModuleDecl>& predefined_modules() {
   static const std::vector<ModuleDecl> modules = [] {
     std::vector<ModuleDecl> list;
-#define SYLVA_MODULE(name, ...) list.push_back(ModuleDecl{#name, split_types(#__VA_ARGS__), Token{}});
+#define SYLVA_MODULE(name, ...) list.push_back(ModuleDecl{#name, split_types(#__VA_ARGS__), Token{}, {}});
 #include "sylva/predefined_modules.def"
     return list;
   }();

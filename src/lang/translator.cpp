@@ -2,8 +2,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
+#include "lang/cpfg_parser.h"
 #include "lang/cpp_generator.h"
 #include "lang/lc_parser.h"
 #include "lang/token.h"
@@ -33,10 +35,95 @@ std::string read_model_file(const std::string& path) {
   throw ModelError(message.find(path) != std::string::npos ? message : path + ": error: " + message);
 }
 
+// The files named by the preprocessor's line markers.
+std::vector<std::string> marker_files(const std::string& text) {
+  std::vector<std::string> files;
+  std::set<std::string> seen;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.size() < 4 || line[0] != '#' || line[1] != ' ') continue;
+    const std::size_t q = line.find('"'), e = line.rfind('"');
+    if (q == std::string::npos || e <= q) continue;
+    std::string name = line.substr(q + 1, e - q - 1);
+    if (name.empty() || name[0] == '<') continue;
+    if (seen.insert(name).second) files.push_back(name);
+  }
+  return files;
+}
+
+Translation translate_cpfg(const std::string& model_path, const TranslatorOptions& options) {
+  // cpfg models go through the C preprocessor (#define, #include) on their own.
+  std::vector<std::string> argv = {options.compiler, "-E", "-x", "c", "-D__SYLVA__=1", "-D__CPFG__=1"};
+  for (const std::string& d : options.defines) argv.push_back("-D" + d);
+  std::string dir = fs::path(model_path).parent_path().string();
+  argv.push_back("-I");
+  argv.push_back(dir.empty() ? "." : dir);
+  argv.push_back(model_path);
+  ProcessResult pre = run_process(argv);
+  if (pre.exit_code != 0) preprocessor_failed(model_path, pre);
+  Model model = parse_cpfg(pre.out, model_path);
+
+  // The generated C++ needs the runtime: lpfgall.h, preprocessed in front of it.
+  std::vector<std::string> rt = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1",
+                                 "-isystem", options.runtime_include_dir, "-include", "lpfgall.h", "/dev/null"};
+  ProcessResult runtime = run_process(rt);
+  if (runtime.exit_code != 0) preprocessor_failed(model_path, runtime);
+
+  Translation result;
+  result.cpp = runtime.out + "\n" + generate_cpp(model);
+  result.dependencies = marker_files(pre.out);
+  for (const std::string& f : marker_files(runtime.out))
+    if (f != "/dev/null") result.dependencies.push_back(f);
+  return result;
+}
+
 }  // namespace
+
+bool looks_like_cpfg(const std::string& source) {
+  // Comments out, then look for the two lines.
+  std::string text;
+  text.reserve(source.size());
+  for (std::size_t i = 0; i < source.size();) {
+    if (source.compare(i, 2, "/*") == 0) {
+      std::size_t e = source.find("*/", i + 2);
+      for (std::size_t k = i; k < (e == std::string::npos ? source.size() : e + 2); ++k)
+        if (source[k] == '\n') text += '\n';
+      i = e == std::string::npos ? source.size() : e + 2;
+    } else if (source.compare(i, 2, "//") == 0) {
+      while (i < source.size() && source[i] != '\n') ++i;
+    } else {
+      text += source[i++];
+    }
+  }
+  bool lsystem = false, end = false;
+  std::istringstream in(text);
+  std::string line;
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  while (std::getline(in, line)) {
+    std::size_t b = line.find_first_not_of(" \t\r");
+    if (b == std::string::npos) continue;
+    std::string l = lower(line.substr(b));
+    if (l.rfind("lsystem", 0) == 0) {
+      std::size_t c = l.find_first_not_of(" \t", 7);
+      if (c != std::string::npos && l[c] == ':') lsystem = true;
+    }
+    if (l.rfind("endlsystem", 0) == 0) end = true;
+  }
+  return lsystem && end;
+}
 
 Translation translate_file(const std::string& model_path, const TranslatorOptions& options) {
   std::string source = read_model_file(model_path);
+  const std::string& language = options.language;
+  if (language == "cpfg" || ((language.empty() || language == "auto") && looks_like_cpfg(source)))
+    return translate_cpfg(model_path, options);
+  if (!language.empty() && language != "auto" && language != "lc")
+    throw ModelError("unknown model language '" + language + "' (expected cpfg or lc)");
+
   std::vector<std::string> argv = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1"};
   for (const std::string& d : options.defines) argv.push_back("-D" + d);
   argv.push_back("-isystem");

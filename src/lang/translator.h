@@ -11,7 +11,14 @@ struct TranslatorOptions {
   std::string compiler = "g++";           // its preprocessor is used
   std::string runtime_include_dir;         // where lpfgall.h lives
   std::vector<std::string> defines;        // -D for the preprocessor
+  // "auto" (or empty): cpfg if the file has `Lsystem:` ... `endlsystem` lines,
+  // L+C otherwise; "cpfg" or "lc" to say which.
+  std::string language = "auto";
 };
+
+// Whether a model's text is cpfg (an `Lsystem:` line and an `endlsystem`
+// line, outside comments).
+bool looks_like_cpfg(const std::string& source);
 
 struct Translation {
   std::string cpp;                          // preprocessed C++ (compile as .ii)

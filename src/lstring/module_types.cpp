@@ -18,7 +18,9 @@ ModuleTypes ModuleTypes::from_model(const abi::ModelDescriptor& model) {
     if (!format && k < model.predefined_count && k < predefined_count) format = predefined[k].format_params;
     types.push_back(Type{model.modules[k].name, model.modules[k].param_size, format});
   }
-  return ModuleTypes(std::move(types));
+  ModuleTypes result(std::move(types));
+  result.set_cpfg((model.flags & abi::kModelCpfg) != 0);
+  return result;
 }
 
 std::optional<ModuleId> ModuleTypes::find(std::string_view name) const {

@@ -34,6 +34,9 @@ class ModuleTypes {
   std::uint32_t encoded_size(ModuleId id) const { return encoded_sizes_[id]; }
   const std::uint32_t* encoded_sizes() const { return encoded_sizes_.data(); }
   std::optional<ModuleId> find(std::string_view name) const;
+  // The model is cpfg's: its strings are written in cpfg's format.
+  bool cpfg() const { return cpfg_; }
+  void set_cpfg(bool cpfg) { cpfg_ = cpfg; }
 
   // "p1,p2" for a module's parameter block.
   void format_params(ModuleId id, const unsigned char* params, std::string& out) const;
@@ -42,6 +45,7 @@ class ModuleTypes {
   std::vector<Type> types_;
   std::vector<std::uint32_t> encoded_sizes_;
   std::unordered_map<std::string, ModuleId> by_name_;
+  bool cpfg_ = false;
 };
 
 // The engine's own entries for the predefined modules, in id order.

@@ -497,7 +497,8 @@ TEST(GeometryExampleDrawings, PdfRasterizedByPdftoppm) {
 }
 
 // PostScript and EPS as text: the header, the bounding box of the asked
-// size, and for the snowflake after one step one lineto per segment (12).
+// size, and for the snowflake after one step one lineto per segment (12);
+// then the PostScript rasterized by ghostscript.
 TEST(GeometryExampleDrawings, PostScriptAndEpsWellFormed) {
   const std::string dir = test_dir();
   run_example("snowflake", {"--steps", "1", "-o", dir + "/s.ps", "-o", dir + "/s.eps", "--width", "200", "--height", "150"});
@@ -520,6 +521,19 @@ TEST(GeometryExampleDrawings, PostScriptAndEpsWellFormed) {
     while (body >> word) linetos += word == "l";
     EXPECT_EQ(linetos, 12) << file;
   }
+  // Rasterized by ghostscript, where there is one: as the PNG of the same
+  // size, the lines within the box worked out by hand (200 x 150: the height
+  // limits, 135 pixels per unit), the middle background.
+  ProcessResult r = run_process({"gs", "-q", "-dSAFER", "-dBATCH", "-dNOPAUSE", "-sDEVICE=png16m", "-r72", "-g200x150",
+                                 "-dFIXEDMEDIA", "-sOutputFile=" + dir + "/s-ps.png", dir + "/s.ps"});
+  if (r.exit_code == -1) GTEST_SKIP() << "ghostscript is not installed";
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image page = read_png(dir + "/s-ps.png");
+  ASSERT_EQ(page.width, 200);
+  ASSERT_EQ(page.height, 150);
+  expect_background_corners(page, kBlack);
+  expect_drawn_in(drawn(page, kBlack), framed(2 * std::sqrt(3.0) / 3, 1, 200, 150), 2);
+  EXPECT_EQ(page.at(100, 75), kBlack);
 }
 
 // ---------------------------------------------------------------------------

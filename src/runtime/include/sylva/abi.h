@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 1;
+inline constexpr std::uint32_t kAbiVersion = 2;
 
 using ModuleId = std::uint16_t;
 
@@ -133,7 +133,15 @@ struct ModelDescriptor {
   void (*start_each)();
   void (*end_each)();
   void (*end)();
+  // Added in ABI version 2.
+  std::uint32_t flags;  // kModelCpfg ...
+  // Called by a forward derivation step for every module of the old string
+  // before its productions are tried (cpfg's stochastic draw); may be null.
+  void (*before_module)(ModuleId id);
 };
+
+// ModelDescriptor::flags
+inline constexpr std::uint32_t kModelCpfg = 1;  // a cpfg model: cpfg's string format and derivation
 
 using ModelEntryPoint = const ModelDescriptor* (*)();
 inline constexpr const char* kEntryPointName = "sylva_model_v1";

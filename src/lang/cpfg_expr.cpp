@@ -1,0 +1,396 @@
+#include "lang/cpfg_expr.h"
+
+#include <cctype>
+#include <map>
+
+namespace sylva::lang::cpfg {
+namespace {
+
+struct Tok {
+  enum Kind { kNumber, kIdent, kString, kOp, kEnd } kind = kEnd;
+  std::string text;
+  Pos pos;
+  std::size_t end = 0;
+};
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+Tok read_token(Cursor& c) {
+  c.skip_space();
+  Tok t;
+  t.pos = c.pos();
+  const std::size_t start = c.at();
+  const std::string& s = c.text();
+  std::size_t i = start;
+  if (i >= s.size()) {
+    t.end = i;
+    return t;
+  }
+  const char ch = s[i];
+  if (std::isdigit(static_cast<unsigned char>(ch)) ||
+      (ch == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
+    t.kind = Tok::kNumber;
+    while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+      std::size_t k = i + 1;
+      if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+      if (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) {
+        i = k;
+        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+      }
+    }
+    if (i < s.size() && (s[i] == 'f' || s[i] == 'F')) ++i;  // 1.0f as in C
+  } else if (ident_start(ch)) {
+    t.kind = Tok::kIdent;
+    while (i < s.size() && ident_char(s[i])) ++i;
+  } else if (ch == '"') {
+    t.kind = Tok::kString;
+    ++i;
+    while (i < s.size() && s[i] != '"') i += s[i] == '\\' ? 2 : 1;
+    if (i >= s.size()) c.fail("unterminated string");
+    ++i;
+  } else {
+    t.kind = Tok::kOp;
+    static const char* ops[] = {"-->", "->", "~>", "&&", "||", "==", "!=", "<=", ">="};
+    std::size_t len = 1;
+    for (const char* op : ops)
+      if (s.compare(i, std::char_traits<char>::length(op), op) == 0) {
+        len = std::char_traits<char>::length(op);
+        break;
+      }
+    i += len;
+  }
+  t.text = s.substr(start, i - start);
+  t.end = i;
+  return t;
+}
+
+Tok peek_token(Cursor& c) {
+  const std::size_t at = c.at();
+  Tok t = read_token(c);
+  c.set(at);
+  return t;
+}
+
+Tok next_token(Cursor& c) {
+  Tok t = read_token(c);
+  c.set(t.end);
+  return t;
+}
+
+std::string describe(const Tok& t) {
+  if (t.kind == Tok::kEnd) return "the end of the line";
+  return "'" + t.text + "'";
+}
+
+[[noreturn]] void expected(Cursor& c, const Tok& t, const std::string& what) {
+  c.fail_at(t.pos, "expected " + what + ", found " + describe(t));
+}
+
+void expect_op(Cursor& c, const char* op) {
+  Tok t = next_token(c);
+  if (t.kind != Tok::kOp || t.text != op) expected(c, t, std::string("'") + op + "'");
+}
+
+std::string number_text(std::string n) {
+  if (!n.empty() && (n.back() == 'f' || n.back() == 'F')) n.pop_back();
+  if (n.find_first_of(".eE") == std::string::npos) n += ".0";
+  if (n[0] == '.') n = "0" + n;
+  if (n.back() == '.') n += "0";
+  return n;
+}
+
+struct Function {
+  const char* cpp;
+  int min_args, max_args;
+};
+
+const std::map<std::string, Function>& functions() {
+  static const std::map<std::string, Function> table = {
+      {"sin", {"sylva_cpfg_sin", 1, 1}},     {"cos", {"sylva_cpfg_cos", 1, 1}},
+      {"tan", {"sylva_cpfg_tan", 1, 1}},     {"asin", {"sylva_cpfg_asin", 1, 1}},
+      {"acos", {"sylva_cpfg_acos", 1, 1}},   {"atan", {"sylva_cpfg_atan", 1, 2}},
+      {"atan2", {"sylva_cpfg_atan2", 2, 2}}, {"exp", {"::std::exp", 1, 1}},
+      {"log", {"::std::log", 1, 1}},         {"sqrt", {"::std::sqrt", 1, 1}},
+      {"fabs", {"::std::fabs", 1, 1}},       {"floor", {"::std::floor", 1, 1}},
+      {"ceil", {"::std::ceil", 1, 1}},       {"trunc", {"::std::trunc", 1, 1}},
+      {"sign", {"sylva_cpfg_sign", 1, 1}},   {"ran", {"sylva_cpfg_ran", 1, 1}},
+      {"nran", {"sylva_cpfg_nran", 2, 2}},   {"srand", {"sylva_cpfg_srand", 1, 1}},
+      {"func", {"sylva_cpfg_func", 2, 2}},   {"pow", {"sylva_cpfg_pow", 2, 2}},
+  };
+  return table;
+}
+
+std::string ternary(Cursor& c, Scope& scope);
+
+std::string call(Cursor& c, Scope& scope, const Tok& name) {
+  if (name.text == "printf") {
+    expect_op(c, "(");
+    Tok format = next_token(c);
+    if (format.kind != Tok::kString) expected(c, format, "a format string");
+    std::string text = "::std::printf(" + format.text;
+    while (true) {
+      Tok t = next_token(c);
+      if (t.kind == Tok::kOp && t.text == ")") break;
+      if (t.kind != Tok::kOp || t.text != ",") expected(c, t, "',' or ')'");
+      text += ", (double)(" + ternary(c, scope) + ")";
+    }
+    return text + ")";
+  }
+  auto it = functions().find(name.text);
+  if (it == functions().end()) {
+    static const std::set<std::string> later = {"bran", "biran", "fopen", "fclose", "fscan", "fscanf", "fprintf",
+                                                "fflush", "curveX", "curveY", "curveZ", "curveGAL", "inblob",
+                                                "stop", "vvXmin"};
+    if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
+    c.fail_at(name.pos, "unknown function '" + name.text + "'");
+  }
+  expect_op(c, "(");
+  std::vector<std::string> args;
+  if (peek_token(c).text != ")") {
+    args.push_back(ternary(c, scope));
+    while (peek_token(c).text == ",") {
+      next_token(c);
+      args.push_back(ternary(c, scope));
+    }
+  }
+  expect_op(c, ")");
+  const int n = static_cast<int>(args.size());
+  if (n < it->second.min_args || n > it->second.max_args)
+    c.fail_at(name.pos, name.text + " takes " + std::to_string(it->second.min_args) +
+                            (it->second.max_args != it->second.min_args ? " or " + std::to_string(it->second.max_args) : "") +
+                            " argument(s), not " + std::to_string(n));
+  std::string text = it->second.cpp;
+  text += "(";
+  for (int k = 0; k < n; ++k) text += (k ? ", " : "") + std::string("(double)(") + args[k] + ")";
+  return text + ")";
+}
+
+std::string array_index(Cursor& c, Scope& scope) {
+  // name[i,j] or name[i][j]
+  std::string text;
+  while (peek_token(c).text == "[") {
+    next_token(c);
+    text += "[(int)(" + ternary(c, scope) + ")]";
+    while (peek_token(c).text == ",") {
+      next_token(c);
+      text += "[(int)(" + ternary(c, scope) + ")]";
+    }
+    expect_op(c, "]");
+  }
+  return text;
+}
+
+std::string primary(Cursor& c, Scope& scope) {
+  Tok t = next_token(c);
+  if (t.kind == Tok::kNumber) return number_text(t.text);
+  if (t.kind == Tok::kOp && t.text == "(") {
+    std::string inner = ternary(c, scope);
+    expect_op(c, ")");
+    return "(" + inner + ")";
+  }
+  if (t.kind == Tok::kIdent) {
+    if (peek_token(c).text == "(") return call(c, scope, t);
+    if (scope.arrays.count(t.text)) {
+      if (peek_token(c).text != "[") c.fail_at(t.pos, "array " + t.text + " needs an index");
+      return variable(t.text) + array_index(c, scope);
+    }
+    if (scope.formals.count(t.text) || scope.locals.count(t.text) || scope.globals.count(t.text))
+      return variable(t.text);
+    c.fail_at(t.pos, "unknown variable '" + t.text + "'");
+  }
+  expected(c, t, "an expression");
+}
+
+std::string unary(Cursor& c, Scope& scope) {
+  Tok t = peek_token(c);
+  if (t.kind == Tok::kOp && (t.text == "-" || t.text == "+" || t.text == "!")) {
+    next_token(c);
+    return "(" + t.text + unary(c, scope) + ")";
+  }
+  return primary(c, scope);
+}
+
+// ^ is exponentiation, tighter than * and /, left-associative.
+std::string power(Cursor& c, Scope& scope) {
+  std::string left = unary(c, scope);
+  while (peek_token(c).text == "^") {
+    next_token(c);
+    left = "sylva_cpfg_pow(" + left + ", " + unary(c, scope) + ")";
+  }
+  return left;
+}
+
+std::string product(Cursor& c, Scope& scope) {
+  std::string left = power(c, scope);
+  while (true) {
+    Tok t = peek_token(c);
+    if (t.kind != Tok::kOp || (t.text != "*" && t.text != "/" && t.text != "%")) return left;
+    next_token(c);
+    std::string right = power(c, scope);
+    left = t.text == "%" ? "::std::fmod(" + left + ", " + right + ")" : "(" + left + " " + t.text + " " + right + ")";
+  }
+}
+
+std::string sum(Cursor& c, Scope& scope) {
+  std::string left = product(c, scope);
+  while (true) {
+    Tok t = peek_token(c);
+    if (t.kind != Tok::kOp || (t.text != "+" && t.text != "-")) return left;
+    next_token(c);
+    left = "(" + left + " " + t.text + " " + product(c, scope) + ")";
+  }
+}
+
+std::string binary_level(Cursor& c, Scope& scope, int level) {
+  // 0: ||, 1: &&, 2: == !=, 3: < <= > >=
+  static const std::vector<std::vector<std::string>> ops = {{"||"}, {"&&"}, {"==", "!="}, {"<", "<=", ">", ">="}};
+  auto next = [&]() { return level == 3 ? sum(c, scope) : binary_level(c, scope, level + 1); };
+  std::string left = next();
+  while (true) {
+    Tok t = peek_token(c);
+    bool match = false;
+    for (const std::string& op : ops[static_cast<std::size_t>(level)]) match = match || (t.kind == Tok::kOp && t.text == op);
+    if (!match) return left;
+    next_token(c);
+    left = "(" + left + " " + t.text + " " + next() + ")";
+  }
+}
+
+std::string ternary(Cursor& c, Scope& scope) {
+  std::string cond = binary_level(c, scope, 0);
+  if (peek_token(c).text != "?") return cond;
+  next_token(c);
+  std::string a = ternary(c, scope);
+  expect_op(c, ":");
+  std::string b = ternary(c, scope);
+  return "((" + cond + ") ? (double)(" + a + ") : (double)(" + b + "))";
+}
+
+std::string block(Cursor& c, Scope& scope) {
+  expect_op(c, "{");
+  return "{ " + statements(c, scope) + " }";
+}
+
+std::string statement(Cursor& c, Scope& scope) {
+  Tok t = next_token(c);
+  if (t.kind == Tok::kIdent && t.text == "if") {
+    expect_op(c, "(");
+    std::string cond = ternary(c, scope);
+    expect_op(c, ")");
+    std::string text = "if (" + cond + ") " + block(c, scope);
+    if (peek_token(c).text == "else") {
+      next_token(c);
+      if (peek_token(c).text == "if") text += " else { " + statement(c, scope) + " }";
+      else text += " else " + block(c, scope);
+    }
+    return text;
+  }
+  if (t.kind == Tok::kIdent && t.text == "while") {
+    expect_op(c, "(");
+    std::string cond = ternary(c, scope);
+    expect_op(c, ")");
+    return "while (" + cond + ") " + block(c, scope);
+  }
+  if (t.kind == Tok::kIdent && t.text == "do") {
+    std::string body = block(c, scope);
+    Tok w = next_token(c);
+    if (w.text != "while") expected(c, w, "'while'");
+    expect_op(c, "(");
+    std::string cond = ternary(c, scope);
+    expect_op(c, ")");
+    if (peek_token(c).text == ";") next_token(c);
+    return "do " + body + " while (" + cond + ");";
+  }
+  if (t.kind != Tok::kIdent) expected(c, t, "a statement (an assignment, if, while or do)");
+  Tok after = peek_token(c);
+  if (after.text == "(") {
+    std::string text = call(c, scope, t);
+    expect_op(c, ";");
+    return text + ";";
+  }
+  std::string target;
+  if (after.text == "[") {
+    if (!scope.arrays.count(t.text)) c.fail_at(t.pos, "'" + t.text + "' is not an array");
+    target = variable(t.text) + array_index(c, scope);
+  } else {
+    if (scope.arrays.count(t.text)) c.fail_at(t.pos, "array " + t.text + " needs an index");
+    if (!scope.formals.count(t.text) && !scope.locals.count(t.text) && !scope.globals.count(t.text)) {
+      if (scope.control_block) scope.globals.insert(t.text);
+      else scope.locals.insert(t.text);
+    }
+    target = variable(t.text);
+  }
+  Tok eq = next_token(c);
+  if (eq.kind != Tok::kOp || eq.text != "=") expected(c, eq, "'=' (an assignment)");
+  std::string value = ternary(c, scope);
+  Tok semi = next_token(c);
+  if (semi.kind != Tok::kOp || semi.text != ";") expected(c, semi, "';' after the assignment");
+  return target + " = " + value + ";";
+}
+
+}  // namespace
+
+void Cursor::fail(const std::string& message) const {
+  Cursor copy = *this;
+  copy.skip_space();
+  std::string found = copy.peek() ? std::string("'") + copy.peek() + "'" : "the end of the line";
+  throw ModelError(copy.location(), message + ", found " + found);
+}
+
+std::string expression(Cursor& c, Scope& scope) { return ternary(c, scope); }
+
+std::string statements(Cursor& c, Scope& scope) {
+  std::string text;
+  while (true) {
+    Tok t = peek_token(c);
+    if (t.kind == Tok::kOp && t.text == "}") {
+      next_token(c);
+      return text;
+    }
+    if (t.kind == Tok::kEnd) expected(c, t, "'}'");
+    text += statement(c, scope) + " ";
+  }
+}
+
+std::string runtime_helpers() {
+  return R"(namespace {
+constexpr double sylva_cpfg_deg = 3.14159265358979323846 / 180.0;
+inline double sylva_cpfg_sin(double a) { return ::std::sin(a * sylva_cpfg_deg); }
+inline double sylva_cpfg_cos(double a) { return ::std::cos(a * sylva_cpfg_deg); }
+inline double sylva_cpfg_tan(double a) { return ::std::tan(a * sylva_cpfg_deg); }
+inline double sylva_cpfg_asin(double x) { return ::std::asin(x) / sylva_cpfg_deg; }
+inline double sylva_cpfg_acos(double x) { return ::std::acos(x) / sylva_cpfg_deg; }
+inline double sylva_cpfg_atan(double x) { return ::std::atan(x) / sylva_cpfg_deg; }
+inline double sylva_cpfg_atan(double x, double y) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
+inline double sylva_cpfg_atan2(double y, double x) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
+inline double sylva_cpfg_pow(double x, double y) { return ::std::pow(x, y); }
+inline double sylva_cpfg_sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
+inline double sylva_cpfg_ran(double x) { return x * ::sylva::rt::next_rand48(); }
+inline double sylva_cpfg_srand(double seed) {
+  ::sylva::rt::control.rand48 = ((static_cast<::std::uint64_t>(static_cast<long>(seed)) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
+  return 0.0;
+}
+inline double sylva_cpfg_nran(double mean, double sd) {
+  double u1 = ::sylva::rt::next_rand48(), u2 = ::sylva::rt::next_rand48();
+  if (u1 <= 0) u1 = 1e-300;
+  return mean + sd * ::std::sqrt(-2.0 * ::std::log(u1)) * ::std::cos(2.0 * 3.14159265358979323846 * u2);
+}
+inline double sylva_cpfg_func(double id, double x) { return func(static_cast<int>(id), static_cast<float>(x)); }
+template <int N>
+void sylva_cpfg_format(const unsigned char* params, ::sylva::abi::TextSink* out) {
+  for (int k = 0; k < N; ++k) {
+    float v;
+    ::std::memcpy(&v, params + 4 * k, sizeof v);
+    char text[48];
+    int n = ::std::snprintf(text, sizeof text, k ? ",%g" : "%g", static_cast<double>(v));
+    out->write(text, static_cast<::std::size_t>(n));
+  }
+}
+[[maybe_unused]] double sylva_cpfg_r = 0;  // the stochastic draw for the module being rewritten
+}  // namespace
+)";
+}
+
+}  // namespace sylva::lang::cpfg

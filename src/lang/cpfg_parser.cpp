@@ -1,0 +1,593 @@
+#include "lang/cpfg_parser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <sstream>
+
+#include "lang/cpfg_expr.h"
+
+namespace sylva::lang {
+namespace {
+using cpfg::Cursor;
+using cpfg::Line;
+using cpfg::Pos;
+using cpfg::Scope;
+
+// ---- logical lines -------------------------------------------------------------
+
+std::vector<Line> read_lines(const std::string& text, std::vector<std::string>& files, const std::string& main_file) {
+  std::vector<Line> lines;
+  std::istringstream in(text);
+  std::string raw;
+  int file = 0, line = 0;
+  auto file_index = [&](const std::string& name) {
+    auto it = std::find(files.begin(), files.end(), name);
+    if (it != files.end()) return static_cast<int>(it - files.begin());
+    files.push_back(name);
+    return static_cast<int>(files.size() - 1);
+  };
+  files.push_back(main_file);
+  int brace_depth = 0;  // define: and Start: blocks may span lines
+  while (std::getline(in, raw)) {
+    if (raw.size() >= 2 && raw[0] == '#' && (raw[1] == ' ' || std::isdigit(static_cast<unsigned char>(raw[1])))) {
+      std::istringstream marker(raw.substr(1));
+      int n = 0;
+      std::string name;
+      marker >> n >> std::ws;
+      std::getline(marker, name);
+      const std::size_t q = name.find('"'), e = name.find('"', q + 1);
+      if (q != std::string::npos && e != std::string::npos) file = file_index(name.substr(q + 1, e - q - 1));
+      line = n;
+      continue;
+    }
+    const int this_line = line++;
+    if (raw.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const bool continues = !lines.empty() && (raw[0] == ' ' || raw[0] == '\t' || brace_depth > 0);
+    if (!continues) lines.emplace_back();
+    Line& l = lines.back();
+    if (continues) {
+      l.text += ' ';
+      l.pos.push_back(l.pos.empty() ? Pos{file, this_line, 1} : l.pos.back());
+    } else {
+      brace_depth = 0;
+    }
+    for (std::size_t k = 0; k < raw.size(); ++k) {
+      if (raw[k] == '\r') continue;
+      l.text += raw[k];
+      l.pos.push_back(Pos{file, this_line, static_cast<int>(k) + 1});
+    }
+    // Only statements that take a { } block continue to its end.
+    std::string lower;
+    for (char ch : l.text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    std::size_t b = lower.find_first_not_of(" \t");
+    const bool block_statement = b != std::string::npos &&
+                                 (lower.compare(b, 7, "define:") == 0 || lower.compare(b, 5, "start") == 0 ||
+                                  lower.compare(b, 3, "end") == 0);
+    if (block_statement) {
+      int depth = 0;
+      for (char ch : l.text) depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
+      brace_depth = depth;
+    } else {
+      brace_depth = 0;
+    }
+  }
+  for (Line& l : lines) l.pos.push_back(Pos{l.pos.back().file, l.pos.back().line, l.pos.back().column + 1});
+  return lines;
+}
+
+Token token_at(Pos p, std::string text = {}) {
+  Token t;
+  t.kind = TokenKind::Identifier;
+  t.text = std::move(text);
+  t.file = p.file;
+  t.line = p.line;
+  t.column = p.column;
+  t.space_before = true;
+  return t;
+}
+
+Code code_at(Pos p, const std::string& text) { return Code{token_at(p, text)}; }
+
+// ---- symbols -------------------------------------------------------------------
+
+// Multi-character turtle symbols (CPFG manual, section 6), longest first.
+const char* const kAtSymbols[] = {"Di", "Dd", "bo", "bc", "PS", "PC", "PD", "Gs", "Ge", "Gc", "Gt", "Gr", "Tx",
+                                  "Ts", "Td", "Tp", "Tf", "M",  "v",  "R",  "D",  "o",  "c",  "O",  "#",  "T",
+                                  "L",  "S",  "s",  "b"};
+
+bool is_separator(char c) { return c == ' ' || c == '\t' || c == '\0'; }
+
+std::string mangle(const std::string& symbol, std::size_t params) {
+  std::string name = "cpfg_";
+  static const char* hex = "0123456789ABCDEF";
+  for (char ch : symbol) {
+    const unsigned char u = static_cast<unsigned char>(ch);
+    if (std::isalnum(u)) name += ch;
+    else name += std::string("x") + hex[u >> 4] + hex[u & 15];
+  }
+  return name + "_" + std::to_string(params);
+}
+
+class CpfgParser {
+ public:
+  CpfgParser(const std::string& text, const std::string& main_file) {
+    model_.main_file = main_file;
+    model_.cpfg = true;
+    lines_ = read_lines(text, model_.files, main_file);
+    model_.modules = predefined_modules();
+    for (std::size_t k = 0; k < model_.modules.size(); ++k) module_index_[model_.modules[k].name] = k;
+    model_.modules[module_index_.at("SB")].display_name = "[";
+    model_.modules[module_index_.at("EB")].display_name = "]";
+    model_.modules[module_index_.at("Cut")].display_name = "%";
+  }
+
+  Model parse() {
+    const Pos first = lines_.empty() ? Pos{0, 1, 1} : lines_.front().pos.front();
+    model_.items.push_back(Code{verbatim(first, cpfg::runtime_helpers())});
+    collect_globals();
+    for (const Line& line : lines_) statement(line);
+    if (!seen_lsystem_) throw ModelError(SourceLocation{model_.main_file, 1, 1}, "expected 'Lsystem:' (a cpfg model)");
+    if (!seen_end_) throw ModelError(SourceLocation{model_.main_file, 1, 1}, "expected 'endlsystem' at the end of the L-system");
+    if (!seen_axiom_) throw ModelError(SourceLocation{model_.main_file, 1, 1}, "the L-system has no axiom");
+    finish();
+    return std::move(model_);
+  }
+
+ private:
+  static Token verbatim(Pos p, const std::string& text) {
+    Token t = token_at(p, text);
+    t.kind = TokenKind::Verbatim;
+    return t;
+  }
+
+  // Names assigned in Start/End blocks are global (CPFG manual 4.1).
+  void collect_globals() {
+    for (const Line& line : lines_) {
+      Cursor c(line, model_.files);
+      std::string key;
+      if (!keyword(c, &key) || (key != "start" && key != "starteach" && key != "endeach" && key != "end")) continue;
+      const std::string& s = line.text;
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!(std::isalpha(static_cast<unsigned char>(s[i])) || s[i] == '_') ||
+            (i > 0 && (std::isalnum(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '_')))
+          continue;
+        std::size_t e = i;
+        while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
+        std::size_t k = e;
+        while (k < s.size() && s[k] == ' ') ++k;
+        if (k < s.size() && s[k] == '=' && (k + 1 >= s.size() || s[k + 1] != '=')) globals_.insert(s.substr(i, e - i));
+        i = e;
+      }
+    }
+  }
+
+  // Reads "word word:" at the start of a line; the key is lower case without spaces.
+  static bool keyword(Cursor& c, std::string* key) {
+    const std::size_t start = c.at();
+    c.skip_space();
+    std::string k;
+    while (true) {
+      while (std::isalpha(static_cast<unsigned char>(c.peek()))) k += static_cast<char>(std::tolower(static_cast<unsigned char>(c.get())));
+      if (c.peek() == ' ' && std::isalpha(static_cast<unsigned char>(c.peek(1))) && !k.empty()) {
+        // "derivation length:", "maximum depth:", "ring lsystem"
+        const std::size_t save = c.at();
+        c.get();
+        std::string rest;
+        std::size_t j = c.at();
+        while (std::isalpha(static_cast<unsigned char>(c.text()[j < c.text().size() ? j : 0])) && j < c.text().size())
+          rest += static_cast<char>(std::tolower(static_cast<unsigned char>(c.text()[j++])));
+        if (k + rest == "derivationlength" || k + rest == "maximumdepth" || k + rest == "ringlsystem" ||
+            k + rest == "homomorphismno") {
+          continue;
+        }
+        c.set(save);
+      }
+      break;
+    }
+    c.skip_space();
+    static const std::set<std::string> colon_words = {"lsystem", "derivationlength", "axiom", "ignore", "consider",
+                                                      "seed", "define", "start", "starteach", "endeach", "end",
+                                                      "maximumdepth", "decomposition", "homomorphism"};
+    if (c.peek() == ':' && colon_words.count(k)) {
+      c.get();
+      *key = k;
+      return true;
+    }
+    if ((k == "endlsystem" || k == "ringlsystem" || k == "decomposition" || k == "homomorphism" ||
+         k == "endhomomorphism" || k == "enddecomposition") &&
+        (c.done())) {
+      *key = k;
+      return true;
+    }
+    c.set(start);
+    return false;
+  }
+
+  void statement(const Line& line) {
+    Cursor c(line, model_.files);
+    const Pos at = c.pos();
+    if (seen_end_) c.fail_at(at, "a second L-system (sub-L-systems) is not supported yet");
+    std::string key;
+    if (!keyword(c, &key)) {
+      if (!seen_lsystem_) c.fail_at(at, "expected 'Lsystem:' before the L-system");
+      production(c, at);
+      return;
+    }
+    if (key != "lsystem" && !seen_lsystem_) c.fail_at(at, "expected 'Lsystem:' before the L-system");
+    if (key == "lsystem") {
+      if (seen_lsystem_) c.fail_at(at, "a second L-system (sub-L-systems) is not supported yet");
+      seen_lsystem_ = true;
+      return;  // the label matters only for sub-L-systems
+    }
+    if (key == "endlsystem") {
+      seen_end_ = true;
+      return;
+    }
+    if (key == "derivationlength") {
+      setting(c, at, Setting::kDerivationLength);
+    } else if (key == "maximumdepth") {
+      if (section_ == kProductions) c.fail_at(at, "'maximum depth:' belongs after 'decomposition' or 'homomorphism'");
+      setting(c, at, section_ == kDecomposition ? Setting::kDecompositionDepth : Setting::kInterpretationDepth);
+    } else if (key == "ringlsystem") {
+      model_.items.push_back(Setting{Setting::kRing, code_at(at, "1"), token_at(at)});
+    } else if (key == "axiom") {
+      Axiom axiom;
+      axiom.at = token_at(at);
+      axiom.modules = module_string(c, nullptr, "the axiom");
+      if (axiom.modules.empty()) c.fail_at(at, "the axiom cannot be empty");
+      seen_axiom_ = true;
+      model_.items.push_back(std::move(axiom));
+    } else if (key == "ignore" || key == "consider") {
+      if (!filter_symbols_.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
+      filter_consider_ = key == "consider";
+      filter_at_ = token_at(at);
+      while (!c.done()) filter_symbols_.push_back(symbol(c));
+    } else if (key == "seed") {
+      if (section_ == kHomomorphism) c.fail_at(at, "seed: in a homomorphism is not supported yet");
+      if (section_ == kDecomposition) c.fail_at(at, "seed: cannot be used in a decomposition (CPFG manual 4.4)");
+      c.skip_space();
+      const Pos p = c.pos();
+      std::string digits;
+      if (c.peek() == '-') digits += c.get();
+      while (std::isdigit(static_cast<unsigned char>(c.peek()))) digits += c.get();
+      if (digits.empty() || digits == "-" || !c.done()) c.fail_at(p, "expected an integer seed after 'seed:'");
+      seed_ = std::stol(digits);
+      has_seed_ = true;
+    } else if (key == "define") {
+      define(c);
+    } else if (key == "start" || key == "starteach" || key == "endeach" || key == "end") {
+      Scope scope;
+      scope.globals = globals_;
+      scope.arrays = arrays_;
+      scope.control_block = true;
+      c.expect("{", "'{' to begin the block");
+      std::string body = "{ " + cpfg::statements(c, scope) + "}";
+      c.accept(";");
+      if (!c.done()) c.fail("expected the end of the line after the block");
+      ControlStatement::Kind kind = key == "start"       ? ControlStatement::kStart
+                                    : key == "starteach" ? ControlStatement::kStartEach
+                                    : key == "endeach"   ? ControlStatement::kEndEach
+                                                         : ControlStatement::kEnd;
+      control_[kind] += body;
+      control_at_[kind] = at;
+    } else if (key == "decomposition") {
+      if (section_ == kHomomorphism) c.fail_at(at, "decomposition: must come before homomorphism:");
+      section_ = kDecomposition;
+    } else if (key == "homomorphism") {
+      section_ = kHomomorphism;
+    } else if (key == "endhomomorphism" || key == "enddecomposition") {
+      // tolerated
+    }
+  }
+
+  void setting(Cursor& c, Pos at, Setting::Kind kind) {
+    Scope scope;
+    scope.globals = globals_;
+    std::string e = cpfg::expression(c, scope);
+    if (!c.done()) c.fail("expected the end of the statement");
+    model_.items.push_back(Setting{kind, code_at(at, "(" + e + ")"), token_at(at)});
+  }
+
+  void define(Cursor& c) {
+    c.expect("{", "'{' after 'define:'");
+    std::string text;
+    while (!c.accept("}")) {
+      c.skip_space();
+      std::string word;
+      while (std::isalpha(static_cast<unsigned char>(c.peek()))) word += c.get();
+      if (word != "array") c.fail("expected 'array name[size]' in define:");
+      c.skip_space();
+      std::string name;
+      while (std::isalnum(static_cast<unsigned char>(c.peek())) || c.peek() == '_') name += c.get();
+      if (name.empty()) c.fail("expected an array name");
+      c.expect("[", "'[' and the array's dimensions");
+      std::string dims;
+      do {
+        c.skip_space();
+        std::string n;
+        while (std::isdigit(static_cast<unsigned char>(c.peek()))) n += c.get();
+        if (n.empty()) c.fail("expected an integer dimension");
+        dims += "[" + n + "]";
+      } while (c.accept(","));
+      c.expect("]", "']'");
+      text += "[[maybe_unused]] double " + cpfg::variable(name) + dims;
+      if (c.accept("=")) {
+        c.expect("{", "'{' and the array's values");
+        Scope scope;
+        text += " = {";
+        do text += "(" + cpfg::expression(c, scope) + "),";
+        while (c.accept(","));
+        c.expect("}", "'}' after the values");
+        text += "}";
+      }
+      text += ";\n";
+      c.expect(";", "';' after the array");
+      arrays_.insert(name);
+    }
+    model_.items.push_back(Code{verbatim(c.pos(), "namespace {\n" + text + "}\n")});
+  }
+
+  // ---- modules ---------------------------------------------------------------
+
+  // One cpfg symbol: a character, or a multi-character turtle symbol.
+  std::string symbol(Cursor& c) {
+    c.skip_space();
+    const Pos p = c.pos();
+    char ch = c.get();
+    if (ch == '\0') c.fail_at(p, "expected a symbol");
+    if (ch == '*' ) c.fail_at(p, "'*' is not a symbol (it stands for an empty successor or condition)");
+    if (ch == '(' || ch == ')') c.fail_at(p, std::string("expected a symbol, found '") + ch + "'");
+    std::string s(1, ch);
+    if (ch == '@') {
+      for (const char* tail : kAtSymbols)
+        if (c.starts_with(tail)) {
+          s += tail;
+          c.set(c.at() + std::char_traits<char>::length(tail));
+          return s;
+        }
+      if (!is_separator(c.peek())) s += c.get();
+    } else if (ch == '?') {
+      if (c.peek() == '(') c.fail_at(p, "sub-L-system calls ?(label,scale) are not supported yet");
+      if (std::isalpha(static_cast<unsigned char>(c.peek()))) s += c.get();
+    }
+    return s;
+  }
+
+  std::string module_name(const std::string& sym, std::size_t params, Pos at, Cursor& c) {
+    if (sym == "[" || sym == "]" || sym == "%") {
+      if (params) c.fail_at(at, "'" + sym + "' takes no parameters");
+      return sym == "[" ? "SB" : sym == "]" ? "EB" : "Cut";
+    }
+    std::string name = mangle(sym, params);
+    if (!module_index_.count(name)) {
+      ModuleDecl decl{name, std::vector<std::string>(params, "float"), token_at(at), sym};
+      module_index_[name] = model_.modules.size();
+      model_.modules.push_back(decl);
+      by_symbol_[sym].push_back(name);
+    }
+    return name;
+  }
+
+  // Modules up to the end of the line or a stop token (":" after a successor).
+  std::vector<ModuleCall> module_string(Cursor& c, Scope* scope, const char* what) {
+    std::vector<ModuleCall> calls;
+    Scope constants;
+    constants.globals = globals_;
+    constants.arrays = arrays_;
+    Scope& s = scope ? *scope : constants;
+    while (!c.done()) {
+      if (c.peek() == ':') break;
+      const Pos p = c.pos();
+      if (c.peek() == '*' && calls.empty()) {
+        c.get();
+        if (!c.done() && c.peek() != ':') c.fail("expected the end of the successor after '*'");
+        break;
+      }
+      std::string sym = symbol(c);
+      std::vector<Code> args;
+      if (c.peek() == '(') {
+        c.get();
+        do {
+          c.skip_space();
+          const Pos ap = c.pos();
+          if (c.peek() == '"') c.fail_at(ap, "string parameters (" + sym + "(\"...\")) are not supported yet");
+          args.push_back(code_at(ap, "static_cast<float>(" + cpfg::expression(c, s) + ")"));
+        } while (c.accept(","));
+        c.expect(")", std::string("',' or ')' in the parameters of ") + sym + " in " + what);
+      }
+      ModuleCall call;
+      call.name = module_name(sym, args.size(), p, c);
+      call.args = std::move(args);
+      call.at = token_at(p);
+      calls.push_back(std::move(call));
+    }
+    return calls;
+  }
+
+  bool at_arrow(Cursor& c) {
+    c.skip_space();
+    return c.starts_with("-->") || c.starts_with("->");
+  }
+
+  // Pattern modules up to '<', '>', ':' or the arrow.
+  std::vector<PatternModule> pattern(Cursor& c, Scope& scope, bool right_context) {
+    std::vector<PatternModule> modules;
+    while (true) {
+      c.skip_space();
+      const char ch = c.peek();
+      if (ch == '\0') c.fail("expected '-->' after the predecessor");
+      if (ch == '<' || ch == '>' || ch == ':' || at_arrow(c)) break;
+      const Pos p = c.pos();
+      if (ch == '=') {
+        // cpfg's "=": the rest of the branch, before its ']'.
+        c.get();
+        c.skip_space();
+        if (!right_context || c.peek() != ']') c.fail_at(p, "'=' is supported only before ']' in a right context");
+        continue;
+      }
+      std::string sym = symbol(c);
+      std::vector<std::string> formals;
+      if (c.peek() == '(') {
+        c.get();
+        do {
+          c.skip_space();
+          std::string name;
+          const Pos fp = c.pos();
+          while (std::isalnum(static_cast<unsigned char>(c.peek())) || c.peek() == '_') name += c.get();
+          if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])))
+            c.fail_at(fp, "expected a formal parameter name in the predecessor");
+          scope.formals.insert(name);
+          formals.push_back(cpfg::variable(name));
+        } while (c.accept(","));
+        c.expect(")", "',' or ')' after the formal parameters");
+      }
+      PatternModule m;
+      m.name = module_name(sym, formals.size(), p, c);
+      m.formals = std::move(formals);
+      m.at = token_at(p);
+      modules.push_back(std::move(m));
+    }
+    return modules;
+  }
+
+  void production(Cursor& c, Pos at) {
+    if (!seen_axiom_ && section_ == kProductions) c.fail_at(at, "expected 'Axiom:' before the productions");
+    Rule rule;
+    rule.kind = section_ == kProductions   ? abi::RuleKind::Production
+                : section_ == kDecomposition ? abi::RuleKind::Decomposition
+                                             : abi::RuleKind::Interpretation;
+    rule.at = token_at(at);
+    Scope scope;
+    scope.globals = globals_;
+    scope.arrays = arrays_;
+    std::vector<PatternModule> first = pattern(c, scope, false);
+    if (c.accept("<")) {
+      rule.parts[abi::kLeft] = std::move(first);
+      first = pattern(c, scope, false);
+    }
+    if (first.empty()) c.fail_at(at, "expected a strict predecessor (a production: predecessor --> successor)");
+    rule.parts[abi::kStrict] = std::move(first);
+    if (c.accept(">")) rule.parts[abi::kRight] = pattern(c, scope, true);
+    if (c.peek() == '<' || c.peek() == '>') c.fail("expected ':' or '-->'");
+
+    std::string before, condition = "true", after;
+    if (c.accept(":")) {
+      if (c.accept("{")) before = cpfg::statements(c, scope);
+      c.skip_space();
+      if (c.accept("*")) {
+      } else if (!c.starts_with("{") && !at_arrow(c)) {
+        condition = cpfg::expression(c, scope);
+      }
+      if (c.accept("{")) after = cpfg::statements(c, scope);
+    }
+    c.skip_space();
+    if (!c.accept("-->") && !c.accept("->")) c.fail("expected '-->' between the predecessor and the successor");
+    std::vector<ModuleCall> successor = module_string(c, &scope, "the successor");
+    double probability = 1.0;
+    bool has_probability = false;
+    if (c.accept(":")) {
+      c.skip_space();
+      const Pos p = c.pos();
+      std::string number;
+      while (std::isdigit(static_cast<unsigned char>(c.peek())) || c.peek() == '.') number += c.get();
+      if (c.peek() == 'e' || c.peek() == 'E') {
+        number += c.get();
+        if (c.peek() == '-' || c.peek() == '+') number += c.get();
+        while (std::isdigit(static_cast<unsigned char>(c.peek()))) number += c.get();
+      }
+      char* end = nullptr;
+      probability = number.empty() ? 0 : std::strtod(number.c_str(), &end);
+      if (number.empty() || *end != '\0' || !c.done())
+        c.fail_at(p, "expected a probability (a number) after the successor's ':'");
+      has_probability = true;
+    }
+    if (!c.done()) c.fail("expected the end of the production");
+    if (has_probability && rule.kind != abi::RuleKind::Production)
+      c.fail_at(at, "probabilities in decomposition or homomorphism productions are not supported yet");
+
+    std::string text;
+    for (const std::string& local : scope.locals) text += "double " + cpfg::variable(local) + " = 0; ";
+    text += before;
+    if (condition != "true") text += "if (!(" + condition + ")) return; ";
+    if (rule.kind == abi::RuleKind::Production && has_seed_) {
+      text += "sylva_cpfg_r -= " + std::to_string(probability) + "; if (sylva_cpfg_r > 0) return; ";
+      const std::string& strict = rule.parts[abi::kStrict].front().name;
+      total_probability_[strict] += probability;
+    }
+    text += after;
+    if (!text.empty()) rule.body.push_back(BodyPart{BodyPart::kCode, code_at(at, text), {}, token_at(at)});
+    rule.body.push_back(BodyPart{BodyPart::kProduce, {}, std::move(successor), token_at(at)});
+    rules_.push_back(model_.items.size());
+    model_.items.push_back(std::move(rule));
+  }
+
+  void finish() {
+    // ignore: / consider: name symbols; each stands for all its module types.
+    if (!filter_symbols_.empty()) {
+      ContextFilter filter;
+      filter.consider = filter_consider_;
+      filter.at = filter_at_;
+      for (const std::string& sym : filter_symbols_) {
+        if (sym == "[" || sym == "]" || sym == "%") {
+          filter.names.push_back(sym == "[" ? "SB" : sym == "]" ? "EB" : "Cut");
+          continue;
+        }
+        for (const std::string& name : by_symbol_[sym]) filter.names.push_back(name);
+      }
+      model_.filters.push_back(filter);
+      for (std::size_t index : rules_) std::get<Rule>(model_.items[index]).filter = 0;
+    }
+    // Control statements, with the seed first (cpfg: seed48({seed, 0, 155})).
+    if (has_seed_) {
+      const std::uint64_t state = (155ULL << 32) | (static_cast<std::uint64_t>(seed_) & 0xFFFF);
+      control_[ControlStatement::kStart] =
+          "{ ::sylva::rt::control.rand48 = " + std::to_string(state) + "ULL; }" + control_[ControlStatement::kStart];
+      if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = lines_.front().pos.front();
+      std::string table = "namespace { const double sylva_cpfg_total[] = {";
+      for (const ModuleDecl& m : model_.modules) table += std::to_string(total_probability_[m.name]) + ",";
+      table += "}; void sylva_cpfg_before_module(::sylva::abi::ModuleId id) { sylva_cpfg_r = sylva_cpfg_total[id] * "
+               "::sylva::rt::next_rand48(); } }\n";
+      model_.items.insert(model_.items.begin() + 1, Code{verbatim(lines_.front().pos.front(), table)});
+      model_.cpfg_stochastic = true;
+    }
+    // Globals, declared before everything that uses them.
+    std::string globals = "namespace {\n";
+    for (const std::string& g : globals_) globals += "[[maybe_unused]] double " + cpfg::variable(g) + " = 0;\n";
+    globals += "}\n";
+    model_.items.insert(model_.items.begin() + 1, Code{verbatim(lines_.front().pos.front(), globals)});
+    for (auto& [kind, body] : control_) {
+      ControlStatement statement;
+      statement.kind = static_cast<ControlStatement::Kind>(kind);
+      statement.at = token_at(control_at_[kind]);
+      statement.body.push_back(BodyPart{BodyPart::kCode, code_at(control_at_[kind], body), {}, statement.at});
+      model_.items.push_back(std::move(statement));
+    }
+  }
+
+  enum Section { kProductions, kDecomposition, kHomomorphism };
+
+  Model model_;
+  std::vector<Line> lines_;
+  std::map<std::string, std::size_t> module_index_;
+  std::map<std::string, std::vector<std::string>> by_symbol_;
+  std::map<std::string, double> total_probability_;
+  std::set<std::string> globals_, arrays_;
+  std::vector<std::string> filter_symbols_;
+  bool filter_consider_ = false;
+  Token filter_at_;
+  std::vector<std::size_t> rules_;
+  std::map<int, std::string> control_;
+  std::map<int, Pos> control_at_;
+  Section section_ = kProductions;
+  bool seen_lsystem_ = false, seen_end_ = false, seen_axiom_ = false, has_seed_ = false;
+  long seed_ = 0;
+};
+
+}  // namespace
+
+Model parse_cpfg(const std::string& preprocessed, const std::string& main_file) {
+  return CpfgParser(preprocessed, main_file).parse();
+}
+
+}  // namespace sylva::lang
