@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "api/input_queries.h"
+#include "turtle/cpfg_symbols.h"
 #include "turtle/interpreter.h"
 
 namespace sylva {
@@ -26,6 +27,13 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   control.inputs = inputs_.get();
   control.input_query = &answer_input_query;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
+  if (derivation_->types().cpfg()) {
+    // A cpfg model's turtle symbols, looked up once for every interpretation;
+    // its query symbols (?P ...) are module types of the model's own.
+    auto symbols = std::make_shared<const turtle::CpfgSymbols>(derivation_->types());
+    derivation_->add_query_modules(symbols->query_modules());
+    turtle_settings_.cpfg_symbols = std::move(symbols);
+  }
   derivation_->set_query_pass(
       [this](derive::Derivation& d) { turtle::fill_query_modules(d, turtle_settings_); });
 }

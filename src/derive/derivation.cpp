@@ -46,17 +46,23 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
     skip_tables_.push_back(std::move(skipped));
   }
-  for (std::uint32_t r = 0; r < model.rule_count; ++r) {
-    const abi::Rule& rule = model.rules[r];
-    if (rule.kind != RuleKind::Production) continue;
-    for (int k = 0; k < pattern_length(rule); ++k) {
-      ModuleId id = rule.pattern[k];
-      if (id == rt::mid::GetPos || id == rt::mid::GetHead || id == rt::mid::GetLeft || id == rt::mid::GetUp)
-        uses_query_modules_ = true;
-    }
-  }
+  uses_query_modules_ = predecessor_holds({rt::mid::GetPos, rt::mid::GetHead, rt::mid::GetLeft, rt::mid::GetUp});
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
+}
+
+bool Derivation::predecessor_holds(const std::vector<ModuleId>& ids) const {
+  for (std::uint32_t r = 0; r < model_.rule_count; ++r) {
+    const abi::Rule& rule = model_.rules[r];
+    if (rule.kind != RuleKind::Production) continue;
+    for (int k = 0; k < pattern_length(rule); ++k)
+      if (std::find(ids.begin(), ids.end(), rule.pattern[k]) != ids.end()) return true;
+  }
+  return false;
+}
+
+void Derivation::add_query_modules(const std::vector<ModuleId>& ids) {
+  if (!ids.empty() && predecessor_holds(ids)) uses_query_modules_ = true;
 }
 
 Derivation::~Derivation() {

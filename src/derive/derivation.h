@@ -63,6 +63,11 @@ class Derivation {
   // GetLeft, GetUp): then the string is interpreted after the axiom and after
   // every step, so those modules carry the turtle's state.
   bool uses_query_modules() const { return uses_query_modules_; }
+  // More module types that the query pass fills, beyond the four predefined
+  // ones: the interpreter of a model whose own module types are queries
+  // (cpfg's ?P ?H ?L ?U) names them here, before the axiom, so the engine
+  // need not know them.
+  void add_query_modules(const std::vector<ModuleId>& ids);
   // Called after the axiom and after every step (after decomposition, before
   // EndEach) when the model uses query modules.
   void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
@@ -72,6 +77,8 @@ class Derivation {
 
   abi::ControlState& control() const { return *model_.control; }
   SkipTable skip_table(const abi::Rule& rule) const;
+  // Whether a production's predecessor holds one of these module types.
+  bool predecessor_holds(const std::vector<ModuleId>& ids) const;
   // The current string as context matching sees it (a ring if the model says so).
   StringView current_view() const;
 

@@ -22,8 +22,7 @@ std::string warning_at(const std::string& file, const Word& at, const std::strin
 // as unknown.
 const std::set<std::string>& cpfg_commands() {
   static const std::set<std::string> names = {
-      "angle increment", "angle factor", "color increment", "line width increment", "initial scale",
-      "scale multiplier", "ambient light", "background color", "light direction", "diffuse reflection",
+      "ambient light", "background color", "light direction", "diffuse reflection",
       "cue range", "shade mode", "surface ambient", "surface diffuse", "tapered lines", "twist of cylinders",
       "viewpoint", "view reference point", "viewing angle", "twist", "interpretation step", "background scene",
       "tropism direction", "initial elasticity", "elasticity increment", "function", "function set", "contour",
@@ -89,6 +88,12 @@ class Parser {
   void gradient(WordReader& in);
   void initial_color(WordReader& in);
   void initial_line_width(WordReader& in);
+  void angle_increment(WordReader& in) { view_.angle_increment = in.number("the angle increment"); }
+  void angle_factor(WordReader& in);
+  void color_increment(WordReader& in);
+  void line_width_increment(WordReader& in) { view_.line_width_increment = in.number("the line width increment"); }
+  void initial_scale(WordReader& in) { view_.initial_scale = positive(in, "the initial scale"); }
+  void scale_multiplier(WordReader& in) { view_.scale_multiplier = positive(in, "the scale multiplier"); }
 
   ViewFile& view_;
   std::string file_;  // of the command being read
@@ -135,6 +140,13 @@ const std::map<std::string, Parser::Handler>& Parser::handlers() {
       {"gradient", &Parser::gradient},
       {"initial color", &Parser::initial_color},
       {"initial line width", &Parser::initial_line_width},
+      {"angle increment", &Parser::angle_increment},
+      {"angle factor", &Parser::angle_factor},
+      {"color increment", &Parser::color_increment},
+      {"line width increment", &Parser::line_width_increment},
+      {"width increment", &Parser::line_width_increment},
+      {"initial scale", &Parser::initial_scale},
+      {"scale multiplier", &Parser::scale_multiplier},
   };
   return table;
 }
@@ -518,6 +530,16 @@ void Parser::initial_line_width(WordReader& in) {
   else in.fail(style, "expected the line style p (pixels) or s (shaded), found '" + style.text + "'");
 }
 
+void Parser::angle_factor(WordReader& in) {
+  // The same setting as angle increment, as a fraction of a full turn.
+  view_.angle_increment = 360 / positive(in, "the angle factor");
+}
+
+void Parser::color_increment(WordReader& in) {
+  view_.color_increment = in.integer("the colour increment");
+  if (!in.at_end()) in.integer("the back side's colour increment");
+}
+
 void Parser::finish() {
   // The manual: both distances must be given to have an effect.
   if (front_ && back_)
@@ -539,7 +561,12 @@ std::vector<Light> ViewFile::lights_or_default() const { return lights.empty() ?
 turtle::TurtleSettings ViewFile::turtle_settings() const {
   turtle::TurtleSettings settings;
   if (initial_line_width) settings.initial_width = *initial_line_width;
-  if (initial_color) settings.initial_color = *initial_color;
+  if (initial_color) settings.initial_color = settings.cpfg_initial_color = *initial_color;
+  settings.angle_increment = angle_increment;
+  settings.width_increment = line_width_increment;
+  settings.color_increment = color_increment;
+  settings.initial_scale = initial_scale;
+  settings.scale_multiplier = scale_multiplier;
   settings.contour_sides = contour_sides;
   settings.corrected_rotation = corrected_rotation;
   settings.auto_normals = render.auto_normals;

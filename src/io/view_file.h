@@ -132,6 +132,14 @@ struct ViewFile {
   // carry into lpfg models.
   std::optional<int> initial_color;
   std::optional<float> initial_line_width;
+  // cpfg's other turtle commands (CPFG manual 8.1.1), with its defaults: what
+  // a cpfg model's symbols without parameters use. "angle factor: y" sets
+  // angle_increment to 360/y.
+  float angle_increment = 45;
+  float line_width_increment = 0;
+  int color_increment = 1;
+  float initial_scale = 1;
+  float scale_multiplier = 1;
 
   // "file:line:column: warning: ..." for commands lpfg does not know, and
   // values it would ignore.

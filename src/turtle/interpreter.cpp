@@ -38,10 +38,18 @@ constexpr Vec3 kVertical{0, 1, 0};
 
 }  // namespace
 
-TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, Scene* scene, std::string* trace)
-    : settings_(settings), scene_(scene), trace_(trace) {
+TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene,
+                              std::string* trace)
+    : settings_(settings), types_(types), scene_(scene), trace_(trace) {
   state_.width = settings.initial_width;
   state_.color = settings.initial_color;
+  if (types.cpfg()) {
+    cpfg_ = settings.cpfg_symbols && settings.cpfg_symbols->size() == types.size()
+                ? settings.cpfg_symbols
+                : std::make_shared<const CpfgSymbols>(types);
+    state_.color = settings.cpfg_initial_color;
+    state_.scale = settings.initial_scale;
+  }
   for (const Tropism& t : settings.tropisms) elasticity_.push_back(t.elasticity);
   elasticity_.push_back(settings.simple_tropism.elasticity);
   for (float e : elasticity_) bending_ = bending_ || e != 0;
@@ -459,14 +467,13 @@ void TurtleInterpreter::Impl::finish() {
 
 TurtleInterpreter::TurtleInterpreter(const TurtleSettings& settings, const ModuleTypes& types,
                                      geometry::Scene* scene, std::string* trace)
-    : impl_(new Impl(settings, scene, trace)) {
-  (void)types;  // the turtle knows the predefined modules by id
-}
+    : impl_(new Impl(settings, types, scene, trace)) {}
 
 TurtleInterpreter::~TurtleInterpreter() { delete impl_; }
 
 void TurtleInterpreter::visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) {
-  impl_->visit(id, params, source_index, in_string);
+  if (impl_->cpfg_) impl_->visit_cpfg(id, params, source_index, in_string);
+  else impl_->visit(id, params, source_index, in_string);
 }
 
 void TurtleInterpreter::finish() { impl_->finish(); }

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "geometry/placement.h"
 #include "geometry/scene.h"
 #include "geometry/surface.h"
+#include "turtle/cpfg_symbols.h"
 #include "turtle/frame.h"
 #include "turtle/interpreter.h"
 #include "turtle/turtle_settings.h"
@@ -28,9 +30,12 @@ using geometry::Scene;
 inline constexpr float kEpsilon = 1e-5f;
 
 struct TurtleInterpreter::Impl {
-  Impl(const TurtleSettings& settings, Scene* scene, std::string* trace);
+  Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene, std::string* trace);
 
   void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
+  // ---- cpfg_symbols.cpp: a cpfg model's modules, through its symbol table.
+  void visit_cpfg(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
+  void query_cpfg(unsigned char* params, int count, Vec3 value, bool in_string);
   void finish();
 
   // ---- interpreter.cpp
@@ -84,6 +89,9 @@ struct TurtleInterpreter::Impl {
   void draw_cylinder(int index);
 
   const TurtleSettings& settings_;
+  const ModuleTypes& types_;
+  // A cpfg model's symbol table (the settings' own, or built here); null for L+C.
+  std::shared_ptr<const CpfgSymbols> cpfg_;
   Scene* scene_;
   std::string* trace_;
 

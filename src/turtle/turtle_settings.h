@@ -1,6 +1,7 @@
 // What the turtle takes from the view file and the other input files.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "geometry/contour.h"
@@ -10,6 +11,8 @@
 #include "geometry/vec3.h"
 
 namespace sylva::turtle {
+
+class CpfgSymbols;
 
 // A tropism (LPFG manual 8.1.4): the heading bends toward `direction` by
 // elasticity * |H x T| at each F. A torque twists the turtle around H instead.
@@ -36,6 +39,22 @@ struct TurtleSettings {
   const std::vector<geometry::BezierSurface>* surfaces = nullptr;  // Surface(id, ...) counts from 0
   const std::vector<geometry::Contour>* contours = nullptr;        // CurrentContour(id) counts from 1
   const std::vector<geometry::PredefinedMesh>* meshes = nullptr;  // Mesh(id, ...) counts from 0
+
+  // cpfg's view-file turtle commands (CPFG manual 8.1.1) with the manual's
+  // defaults: what a cpfg model's symbols without parameters use (+ turns by
+  // angle_increment, ! and # change the width by width_increment, ; and , the
+  // colour by color_increment, @Di and @Dd the scale by scale_multiplier).
+  float angle_increment = 45;
+  float width_increment = 0;
+  int color_increment = 1;
+  // A cpfg model's first colour when the view file gives no initial color
+  // (an L+C model's is initial_color).
+  int cpfg_initial_color = 128;
+  float initial_scale = 1;
+  float scale_multiplier = 1;
+  // A cpfg model's symbol table, built once per model (Simulation does);
+  // when null, the interpreter of a cpfg model builds its own.
+  std::shared_ptr<const CpfgSymbols> cpfg_symbols;
 };
 
 }  // namespace sylva::turtle

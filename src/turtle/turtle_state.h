@@ -14,6 +14,9 @@ struct TurtleState {
   Frame frame;
   float width = 1;
   int color = 1;
+  // cpfg's turtle scale (@D, @Di, @Dd): multiplies a cpfg model's steps and
+  // circle and sphere sizes.
+  float scale = 1;
 
   // SetCoordinateSystem: MoveTo, LineTo ... points are origin + x*px + y*py + z*pz.
   Vec3 origin{0, 0, 0};

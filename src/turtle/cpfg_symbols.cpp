@@ -1,0 +1,269 @@
+#include "turtle/cpfg_symbols.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string_view>
+#include <unordered_map>
+
+#include "sylva/predefined_ids.h"
+#include "turtle/interpreter_impl.h"
+#include "turtle/trace.h"
+
+namespace sylva::turtle {
+
+CpfgOp cpfg_op(const std::string& symbol) {
+  using O = CpfgOp;
+  static const std::unordered_map<std::string_view, CpfgOp> table = {
+      {"F", O::Forward}, {"f", O::Move}, {"G", O::ForwardNoVertex}, {"g", O::MoveNoVertex},
+      {"@M", O::MoveTo},
+      {"+", O::Left}, {"-", O::Right}, {"&", O::Down}, {"^", O::Up}, {"\\", O::RollLeft}, {"/", O::RollRight},
+      {"|", O::TurnAround},
+      // $ is ABOP's roll to vertical; cpfg also ends a sub-L-system with it,
+      // which Sylva does not have.
+      {"@v", O::RollToVertical}, {"$", O::RollToVertical},
+      {"@R", O::SetHeading},
+      {"#", O::WidthUp}, {"!", O::WidthDown},
+      {";", O::ColorUp}, {",", O::ColorDown},
+      {"{", O::PolygonOrCylinderStart}, {"}", O::PolygonOrCylinderEnd}, {".", O::VertexOrCylinderPoint},
+      {"@o", O::CircleScreen}, {"@c", O::CircleHL}, {"@bo", O::CircleScreenBoundary}, {"@bc", O::CircleHLBoundary},
+      {"@O", O::Sphere},
+      {"@Gs", O::CylinderStart}, {"@Gc", O::CylinderPoint}, {"@Ge", O::CylinderEnd},
+      {"@#", O::Contour}, {"@!", O::ContourSides},
+      {"@D", O::SetScale}, {"@Di", O::ScaleUp}, {"@Dd", O::ScaleDown},
+      {"@Tx", O::Texture},
+      {"@PS", O::SurfaceInit}, {"@PC", O::SurfacePoint}, {"@PD", O::SurfaceDraw},
+      {"@Ts", O::ElasticitySet}, {"@T", O::ElasticityUp}, {"@Td", O::ElasticityDown},
+      {"?P", O::QueryPosition}, {"?H", O::QueryHeading}, {"?L", O::QueryLeft}, {"?U", O::QueryUp},
+  };
+  auto it = table.find(symbol);
+  return it == table.end() ? O::None : it->second;
+}
+
+CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::None), params_(types.size(), 0) {
+  // [ and ] keep the predefined ids; the other predefined modules of L+C
+  // never occur in a cpfg string (cpfg's F is its own module type).
+  if (ops_.size() > rt::mid::EB) {
+    ops_[rt::mid::SB] = CpfgOp::Push;
+    ops_[rt::mid::EB] = CpfgOp::Pop;
+  }
+  for (std::size_t id = rt::mid::PredefinedCount; id < types.size(); ++id) {
+    const auto m = static_cast<ModuleId>(id);
+    ops_[id] = cpfg_op(types.name(m));
+    params_[id] = static_cast<std::uint8_t>(std::min<std::uint32_t>(types[m].param_size / 4, 255));
+  }
+}
+
+std::vector<ModuleId> CpfgSymbols::query_modules() const {
+  std::vector<ModuleId> ids;
+  for (std::size_t id = 0; id < ops_.size(); ++id)
+    if (is_query(ops_[id])) ids.push_back(static_cast<ModuleId>(id));
+  return ids;
+}
+
+// ---- interpretation -----------------------------------------------------------
+
+namespace {
+
+float param(const unsigned char* p, int k) {
+  float v;
+  std::memcpy(&v, p + 4 * k, sizeof v);
+  return v;
+}
+int int_param(const unsigned char* p, int k) { return static_cast<int>(std::lround(param(p, k))); }
+Vec3 vec_param(const unsigned char* p, int k) { return {param(p, k), param(p, k + 1), param(p, k + 2)}; }
+
+// World up, for @v: models grow up the screen, along +y.
+constexpr Vec3 kVertical{0, 1, 0};
+
+// cpfg's colour map has 256 entries; increments wrap around it.
+int wrap_color(int c) { return ((c % 256) + 256) % 256; }
+
+}  // namespace
+
+void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 value, bool in_string) {
+  // ?P(x,y) receives x and y, ?P(x,y,z) all three.
+  const int n = std::min(count, 3);
+  if (in_string && n > 0) {
+    const float xyz[3] = {value.x, value.y, value.z};
+    std::memcpy(params, xyz, sizeof(float) * static_cast<std::size_t>(n));
+  }
+  if (trace_) {
+    *trace_ += in_string ? " = " : " not in the string: ";
+    append_vector(*trace_, value);
+  }
+}
+
+void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uint32_t source_index, bool in_string) {
+  using O = CpfgOp;
+  const CpfgOp op = cpfg_->op(id);
+  if (op == O::None) return;  // cpfg ignores symbols that are not the turtle's
+  const int n = cpfg_->params(id);
+  from_ = Provenance{source_index, id};
+  if (trace_) {
+    *trace_ += types_.name(id);
+    if (n > 0) {
+      *trace_ += '(';
+      for (int k = 0; k < n; ++k) {
+        if (k) *trace_ += ',';
+        append_number(*trace_, param(p, k));
+      }
+      *trace_ += ')';
+    }
+  }
+  Frame& frame = state_.frame;
+  const bool corrected = settings_.corrected_rotation;
+  // A rotation symbol's angle: its parameter, or the view file's increment.
+  const float angle = n > 0 ? param(p, 0) : settings_.angle_increment;
+  // A step: its parameter or 1, times the turtle scale.
+  const float step = (n > 0 ? param(p, 0) : 1.0f) * state_.scale;
+  // A circle or sphere: the parameter is its diameter, the line width by default.
+  const float radius = (n > 0 ? param(p, 0) : state_.width) * state_.scale / 2;
+  switch (op) {
+    case O::None: break;
+    case O::Push: push(); break;
+    case O::Pop: pop(); break;
+
+    case O::Forward: forward(step, true, true); break;
+    case O::Move: forward(step, false, true); break;
+    case O::ForwardNoVertex: forward(step, true, false); break;
+    case O::MoveNoVertex: forward(step, false, false); break;
+    case O::MoveTo: {
+      // Coordinates left out keep their value.
+      Vec3 to = state_.position;
+      if (n > 0) to.x = param(p, 0);
+      if (n > 1) to.y = param(p, 1);
+      if (n > 2) to.z = param(p, 2);
+      move_to(to);
+      break;
+    }
+
+    // The lpfg modules these are the cpfg equivalents of (LPFG manual 5.2):
+    // + Left, - Right, & Down, ^ Up, \ RollL, / RollR.
+    case O::Left: turn(angle, 0); break;
+    case O::Right: turn(-angle, 0); break;
+    case O::Down: turn(corrected ? angle : -angle, 1); break;
+    case O::Up: turn(corrected ? -angle : angle, 1); break;
+    case O::RollLeft: turn(corrected ? -angle : angle, 2); break;
+    case O::RollRight: turn(corrected ? angle : -angle, 2); break;
+    case O::TurnAround: frame.rotate_up(-1, 0); break;
+    case O::RollToVertical:
+      if (!frame.roll_to_vertical(kVertical, kEpsilon)) note(" ignored: heading vertical");
+      break;
+    case O::SetHeading:
+      if (n >= 6) {
+        if (!frame.set_head_up(vec_param(p, 0), vec_param(p, 3), kEpsilon)) note(" ignored: degenerate vectors");
+      } else if (n >= 3) {
+        if (!frame.set_heading(vec_param(p, 0), kEpsilon)) note(" ignored: no heading");
+      } else {
+        note(" ignored: needs a heading");
+      }
+      break;
+
+    case O::WidthUp:
+    case O::WidthDown: {
+      float w = n > 0 ? param(p, 0)
+                      : state_.width + (op == O::WidthUp ? settings_.width_increment : -settings_.width_increment);
+      state_.width = std::max(0.0f, w);
+      break;
+    }
+    case O::ColorUp:
+    case O::ColorDown:
+      state_.color = wrap_color(n > 0 ? int_param(p, 0)
+                                      : state_.color + (op == O::ColorUp ? settings_.color_increment
+                                                                         : -settings_.color_increment));
+      break;
+
+    // With a parameter (the curve type), { } and . are cpfg's generalized
+    // cylinder (CPFG manual 6.7.3); without, its polygon (6.5).
+    case O::PolygonOrCylinderStart:
+      if (n > 0) start_cylinder();
+      else start_polygon();
+      break;
+    case O::PolygonOrCylinderEnd:
+      if (n > 0) end_cylinder();
+      else end_polygon();
+      break;
+    case O::VertexOrCylinderPoint:
+      if (n > 0) cylinder_point();
+      else polygon_vertex();
+      break;
+
+    case O::CircleScreen: circle(radius, 0, true); break;
+    case O::CircleHL: circle(radius, 0, false); break;
+    case O::CircleScreenBoundary: circle(radius, state_.width, true); break;
+    case O::CircleHLBoundary: circle(radius, state_.width, false); break;
+    case O::Sphere: sphere(radius); break;
+
+    case O::CylinderStart: start_cylinder(); break;
+    case O::CylinderPoint: cylinder_point(); break;
+    case O::CylinderEnd: end_cylinder(); break;
+    case O::Contour: {
+      const int c = n > 0 ? int_param(p, 0) : 0;
+      check_contour(c, "@#");
+      state_.contour = state_.blend_contour = c;
+      state_.blend = 0;
+      break;
+    }
+    case O::ContourSides:
+      if (n == 0) note(" ignored: needs a number of sides");
+      else if (cylinder_open(state_)) note(" ignored: inside a generalized cylinder");
+      else state_.contour_sides = std::max(3, int_param(p, 0));
+      break;
+
+    case O::SetScale:
+      if (n > 0) state_.scale = param(p, 0);
+      else note(" ignored: needs a scale");
+      break;
+    case O::ScaleUp: state_.scale = n > 0 ? param(p, 0) : state_.scale * settings_.scale_multiplier; break;
+    case O::ScaleDown:
+      state_.scale = n > 0 ? param(p, 0)
+                           : settings_.scale_multiplier != 0 ? state_.scale / settings_.scale_multiplier
+                                                             : state_.scale;
+      break;
+
+    // cpfg's textures count from 1 (0: none); the view file's from 0.
+    case O::Texture: state_.texture = n > 0 && int_param(p, 0) > 0 ? int_param(p, 0) - 1 : -1; break;
+
+    // @PS(id,type), @PC(id,r,c), @PD(id,s,t): the one L-system surface; the
+    // id, the spline type and the mesh size are not kept.
+    case O::SurfaceInit: lsystem_surface_ = geometry::BezierPatch{}; break;
+    case O::SurfacePoint:
+      if (n >= 3) surface_point(int_param(p, 1), int_param(p, 2));
+      else note(" ignored: needs id, row and column");
+      break;
+    case O::SurfaceDraw: draw_lsystem_surface(); break;
+
+    case O::ElasticitySet:
+      if (n >= 2) change_elasticity(int_param(p, 0), param(p, 1), false);
+      else note(" ignored: needs a tropism id and a value");
+      break;
+    case O::ElasticityUp:
+    case O::ElasticityDown: {
+      if (n == 0) {
+        note(" ignored: needs a tropism id");
+        break;
+      }
+      const int t = int_param(p, 0);
+      const bool known = t >= 1 && static_cast<std::size_t>(t) <= settings_.tropisms.size();
+      float v = n >= 2 ? param(p, 1) : known ? settings_.tropisms[static_cast<std::size_t>(t) - 1].step : 0.0f;
+      change_elasticity(t, op == O::ElasticityUp ? v : -v, true);
+      break;
+    }
+
+    case O::QueryPosition: query_cpfg(p, n, state_.position, in_string); break;
+    case O::QueryHeading: query_cpfg(p, n, frame.heading, in_string); break;
+    case O::QueryLeft: query_cpfg(p, n, frame.left, in_string); break;
+    case O::QueryUp: query_cpfg(p, n, frame.up, in_string); break;
+  }
+  if (trace_) {
+    if (op >= O::Left && op <= O::SetHeading) {
+      note_position(" H ", frame.heading);
+      note_position(" L ", frame.left);
+      note_position(" U ", frame.up);
+    }
+    trace_->push_back('\n');
+  }
+}
+
+}  // namespace sylva::turtle

@@ -1,0 +1,61 @@
+// cpfg's turtle symbols (CPFG manual, chapter 6) as turtle operations.
+//
+// In a cpfg model every (symbol, parameter count) is its own module type
+// whose name is the symbol ("+", "F", "@O", "?P"), and every parameter is a
+// float. The table below is built once per model from its module types, so
+// interpreting a module is one lookup by id rather than a string comparison.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lstring/module_types.h"
+
+namespace sylva::turtle {
+
+enum class CpfgOp : std::uint8_t {
+  None,  // not a turtle symbol: cpfg ignores it when drawing
+  Push, Pop,
+  Forward, Move, ForwardNoVertex, MoveNoVertex,  // F f G g
+  MoveTo,                                          // @M
+  Left, Right, Down, Up, RollLeft, RollRight,      // + - & ^ \ /
+  TurnAround,                                      // |
+  RollToVertical,                                  // @v and $
+  SetHeading,                                      // @R
+  WidthUp, WidthDown,                              // # !
+  ColorUp, ColorDown,                              // ; ,
+  PolygonOrCylinderStart, PolygonOrCylinderEnd, VertexOrCylinderPoint,  // { } .
+  CircleScreen, CircleHL, CircleScreenBoundary, CircleHLBoundary,      // @o @c @bo @bc
+  Sphere,                                                               // @O
+  CylinderStart, CylinderPoint, CylinderEnd,                            // @Gs @Gc @Ge
+  Contour, ContourSides,                                                // @# @!
+  SetScale, ScaleUp, ScaleDown,                                         // @D @Di @Dd
+  Texture,                                                              // @Tx
+  SurfaceInit, SurfacePoint, SurfaceDraw,                               // @PS @PC @PD
+  ElasticitySet, ElasticityUp, ElasticityDown,                          // @Ts @T @Td
+  QueryPosition, QueryHeading, QueryLeft, QueryUp,                      // ?P ?H ?L ?U
+};
+
+// The operation of a symbol, by its name (the symbol as written).
+CpfgOp cpfg_op(const std::string& symbol);
+
+// True for ?P ?H ?L ?U: modules the turtle writes its state into.
+inline bool is_query(CpfgOp op) { return op >= CpfgOp::QueryPosition && op <= CpfgOp::QueryUp; }
+
+class CpfgSymbols {
+ public:
+  explicit CpfgSymbols(const ModuleTypes& types);
+
+  std::size_t size() const { return ops_.size(); }
+  CpfgOp op(ModuleId id) const { return id < ops_.size() ? ops_[id] : CpfgOp::None; }
+  // Number of float parameters of a module of this type.
+  int params(ModuleId id) const { return id < params_.size() ? params_[id] : 0; }
+  // The module ids of ?P ?H ?L ?U, for the derivation's query pass.
+  std::vector<ModuleId> query_modules() const;
+
+ private:
+  std::vector<CpfgOp> ops_;
+  std::vector<std::uint8_t> params_;
+};
+
+}  // namespace sylva::turtle
