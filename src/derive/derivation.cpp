@@ -1,7 +1,9 @@
 #include "derive/derivation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
@@ -19,13 +21,14 @@ int pattern_length(const abi::Rule& rule) {
   return n;
 }
 
-// Rules of the current group first, then group 0's as the fallback.
+// Rules of the current group first, then group 0's as the fallback (lpfg's
+// groups; cpfg's sub-L-systems have no fallback).
 template <class TryRule>
-bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rule* rules, int group,
+bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rule* rules, int group, bool fallback,
                     TryRule&& try_rule) {
   for (std::uint32_t r : candidates)
     if (rules[r].group == group && try_rule(rules[r])) return true;
-  if (group != 0)
+  if (fallback && group != 0)
     for (std::uint32_t r : candidates)
       if (rules[r].group == 0 && try_rule(rules[r])) return true;
   return false;
@@ -46,6 +49,8 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
     skip_tables_.push_back(std::move(skipped));
   }
+  sub_lsystems_ = (model.flags & abi::kModelSubLsystems) != 0;
+  lsystems_.assign(1, sub_lsystems_ ? model.main_lsystem : 0);
   uses_query_modules_ = predecessor_holds({rt::mid::GetPos, rt::mid::GetHead, rt::mid::GetLeft, rt::mid::GetUp});
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
@@ -83,6 +88,32 @@ StringView Derivation::current_view() const {
 
 SkipTable Derivation::skip_table(const abi::Rule& rule) const {
   return rule.filter < 0 ? nullptr : skip_tables_[static_cast<std::size_t>(rule.filter)].data();
+}
+
+// ---- sub-L-systems -------------------------------------------------------------
+
+void Derivation::reset_lsystems() {
+  if (sub_lsystems_) lsystems_.assign(1, model_.main_lsystem);
+}
+
+void Derivation::track_lsystem(ModuleId id, const unsigned char* params) {
+  if (id == model_.call_module) {
+    float value;
+    std::memcpy(&value, params, sizeof value);
+    const int label = static_cast<int>(std::lround(value));
+    const int* labels = model_.lsystem_labels;
+    if (std::find(labels, labels + model_.lsystem_count, label) == labels + model_.lsystem_count)
+      throw ModelError(SourceLocation{model_.source_file, 0, 0},
+                       "?(" + std::to_string(label) + ",...) calls L-system " + std::to_string(label) +
+                           ", but no 'Lsystem: " + std::to_string(label) + "' is defined");
+    lsystems_.push_back(label);
+  } else if (id == model_.return_module && lsystems_.size() > 1) {
+    lsystems_.pop_back();
+  }
+}
+
+void Derivation::track_lsystems(const StringView& src, std::size_t from, std::size_t to) {
+  for (std::size_t at = from; at < to; at = src.next(at)) track_lsystem(src.id_at(at), module_params(src.data, at));
 }
 
 int Derivation::derivation_length() const {
@@ -130,6 +161,7 @@ void Derivation::decompose() {
   depth_warnings_.clear();  // warned once per pass, as lpfg does
   next_.clear();
   int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
+  reset_lsystems();
   expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
   std::swap(string_, next_);
 }
@@ -153,6 +185,7 @@ ModuleString Derivation::interpreted() {
   }
   depth_warnings_.clear();
   int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
+  reset_lsystems();
   expand(RuleKind::Interpretation, current_view(), 0, depth, out);
   return out;
 }
@@ -164,6 +197,7 @@ void Derivation::interpret(InterpretedModuleVisitor& visitor) {
   const int depth = has_rules && model_.interpretation_depth ? model_.interpretation_depth() : 1;
   if (has_rules) depth_warnings_.clear();
   while (expansion_scratch_.empty()) expansion_scratch_.emplace_back();
+  reset_lsystems();
   std::uint32_t index = 0;
   std::size_t pos = src.begin;
   while (pos < src.end) {
@@ -187,6 +221,7 @@ void Derivation::interpret(InterpretedModuleVisitor& visitor) {
         continue;
       }
     }
+    if (sub_lsystems_) track_lsystem(id, data + pos + sizeof(ModuleId));
     visitor.visit(id, data + pos + sizeof(ModuleId), index, true);
     ++index;
     pos = src.next(pos);
@@ -257,7 +292,7 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
 
 bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
                                const ModuleString& built, bool call_body, std::size_t* consumed) {
-  return for_each_group(rules_.forward(kind, src.id_at(pos)), model_.rules, control().current_group,
+  return for_each_group(rules_.forward(kind, src.id_at(pos)), model_.rules, current_group(), !sub_lsystems_,
                         [&](const abi::Rule& rule) {
                           return try_forward(rule, src, pos, out, built, call_body, consumed);
                         });
@@ -277,15 +312,18 @@ void Derivation::derive_forward() {
     if (pos > run) next_.append(src.data + run, pos - run);
   };
   const auto before_module = model_.before_module;
+  reset_lsystems();
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     const bool cut = id == rt::mid::Cut;
     if (before_module && !cut) before_module(id);
     if (!cut && rules_.forward(RuleKind::Production, id).empty()) {
+      if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
       pos = src.next(pos);
       continue;
     }
     flush();
+    const std::size_t start = pos;
     if (cut) {
       // Cut drops itself and the rest of its branch; the closing EB stays.
       pos = find_unmatched_end(src, pos);
@@ -299,6 +337,8 @@ void Derivation::derive_forward() {
         pos = n;
       }
     }
+    // The L-system of the modules after these: as the old string has it.
+    if (sub_lsystems_) track_lsystems(src, start, pos);
     run = pos;
   }
   flush();
@@ -308,7 +348,8 @@ void Derivation::derive_backward() {
   const StringView src = current_view();
   backward_out_.clear();
   std::size_t pos = src.end;
-  const int group = control().current_group;
+  reset_lsystems();
+  const int group = current_group();
   while (pos > src.begin) {
     const ModuleId id = module_id_before(src.data, pos);
     std::size_t consumed = 0;
@@ -317,7 +358,7 @@ void Derivation::derive_backward() {
     if (!candidates.empty()) {
       const StringView built{backward_out_.data(), backward_out_.begin(), backward_out_.end(),
                              types_.encoded_sizes()};
-      applied = for_each_group(candidates, model_.rules, group, [&](const abi::Rule& rule) {
+      applied = for_each_group(candidates, model_.rules, group, !sub_lsystems_, [&](const abi::Rule& rule) {
         return try_backward(rule, src, pos, built, &consumed);
       });
     }
@@ -343,9 +384,12 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
   auto flush = [&] {
     if (pos > run) out.append(source.data + run, pos - run);
   };
+  // The L-system stack follows the string as it is written out: modules
+  // kept as they are here, successors in the recursive call.
   while (pos < source.end) {
     const ModuleId id = source.id_at(pos);
     if (rules_.forward(kind, id).empty()) {
+      if (sub_lsystems_) track_lsystem(id, module_params(source.data, pos));
       pos = source.next(pos);
       continue;
     }
@@ -361,6 +405,7 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
         continue;
       }
     }
+    if (sub_lsystems_) track_lsystem(id, module_params(source.data, pos));
     const std::size_t n = source.next(pos);
     out.append(source.data + pos, n - pos);
     pos = run = n;

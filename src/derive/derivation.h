@@ -73,9 +73,16 @@ class Derivation {
   void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
 
  private:
-  struct Scratch;
 
   abi::ControlState& control() const { return *model_.control; }
+  // The group whose rules apply: lpfg's current group, or with cpfg's
+  // sub-L-systems the label of the L-system the scan is in.
+  int current_group() const { return sub_lsystems_ ? lsystems_.back() : control().current_group; }
+  // cpfg sub-L-systems: the stack of L-system labels while a pass scans the
+  // string; ?(label,s) pushes, $ pops.
+  void reset_lsystems();
+  void track_lsystem(ModuleId id, const unsigned char* params);
+  void track_lsystems(const StringView& src, std::size_t from, std::size_t to);
   SkipTable skip_table(const abi::Rule& rule) const;
   // Whether a production's predecessor holds one of these module types.
   bool predecessor_holds(const std::vector<ModuleId>& ids) const;
@@ -120,6 +127,8 @@ class Derivation {
   bool begun_ = false;
   bool ring_ = false;
   bool uses_query_modules_ = false;
+  bool sub_lsystems_ = false;
+  std::vector<int> lsystems_;
   std::function<void(Derivation&)> query_pass_;
   ModuleString interpretation_out_;
   double growth_ = 1.5;  // bytes after / before the last step

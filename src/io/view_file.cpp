@@ -441,18 +441,30 @@ void Parser::stropism(WordReader& in) {
 void Parser::surface(WordReader& in) {
   SurfaceCommand s;
   Word at = in.next("a surface file name");
+  // cpfg's form (CPFG manual 8.1.5) starts with the id the ~id module uses:
+  // "surface: id file.s scale [i j] [texfile]"; lpfg's with the file.
+  const bool cpfg = !in.at_end() && !in.next_is_number();
+  if (cpfg) {
+    s.id = at.text;
+    for (const SurfaceCommand& other : view_.surfaces)
+      if (other.id == s.id) in.fail(at, "a second surface with id '" + s.id + "'");
+    at = in.next("a surface file name");
+  }
   s.line = at.line;
   s.column = at.column;
   s.file = at.text;
   s.path = resolve_beside(view_.path, at.text);
   if (!in.at_end()) s.scale = positive(in, "the surface scale");
-  if (!in.at_end()) {
+  if (!in.at_end() && (!cpfg || in.next_is_number())) {
     Word sw = in.peek();
     s.s_divisions = in.integer("the subdivisions along s");
     s.t_divisions = in.integer("the subdivisions along t (sdiv and tdiv go together)");
     if (s.s_divisions < 1 || s.t_divisions < 1) in.fail(sw, "expected positive numbers of subdivisions");
   }
-  if (!in.at_end()) {
+  if (cpfg && !in.at_end()) {
+    Word tw = in.next("a texture file");
+    view_.warnings.push_back(warning_at(file_, tw, "texture file '" + tw.text + "' of a surface is not supported yet; ignored"));
+  } else if (!in.at_end()) {
     Word tw = in.peek();
     s.texture = in.integer("the texture id");
     if (s.texture < 0) in.fail(tw, "expected a texture id of 0 or more, found '" + tw.text + "'");
@@ -582,6 +594,7 @@ turtle::TurtleSettings ViewFile::turtle_settings() const {
   };
   for (const TropismCommand& t : tropisms) settings.tropisms.push_back(convert(t));
   if (simple_tropism) settings.simple_tropism = convert(*simple_tropism);
+  for (const SurfaceCommand& s : surfaces) settings.surface_ids.push_back(s.id);
   return settings;
 }
 

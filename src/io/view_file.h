@@ -76,6 +76,7 @@ struct TropismCommand {
 
 // surface: (8.1.5); surfaces get ids from 0 in this order.
 struct SurfaceCommand {
+  std::string id;    // cpfg's form "surface: id file.s scale ..." (the ~id module); empty for lpfg's
   std::string file;  // as written
   std::string path;  // relative to the view file's folder
   float scale = 1;

@@ -207,21 +207,49 @@ class CpfgParser {
   void statement(const Line& line) {
     Cursor c(line, model_.files);
     const Pos at = c.pos();
-    if (seen_end_) c.fail_at(at, "a second L-system (sub-L-systems) is not supported yet");
     std::string key;
-    if (!keyword(c, &key)) {
+    const bool has_key = keyword(c, &key);
+    if (seen_end_ && !(has_key && key == "lsystem"))
+      c.fail_at(at, "expected 'Lsystem:' (a sub-L-system) after 'endlsystem'");
+    if (!has_key) {
       if (!seen_lsystem_) c.fail_at(at, "expected 'Lsystem:' before the L-system");
       production(c, at);
       return;
     }
     if (key != "lsystem" && !seen_lsystem_) c.fail_at(at, "expected 'Lsystem:' before the L-system");
     if (key == "lsystem") {
-      if (seen_lsystem_) c.fail_at(at, "a second L-system (sub-L-systems) is not supported yet");
+      if (seen_lsystem_ && !seen_end_) c.fail_at(at, "expected 'endlsystem' before the next 'Lsystem:'");
+      // The label is optional (0); it names the L-system for ?(label,s) calls.
+      c.skip_space();
+      const Pos lp = c.pos();
+      std::string digits;
+      while (std::isdigit(static_cast<unsigned char>(c.peek()))) digits += c.get();
+      c.skip_space();
+      if (!c.done()) c.fail_at(lp, "expected an integer label after 'Lsystem:'");
+      const int label = digits.empty() ? 0 : std::stoi(digits);
+      for (const Block& b : blocks_)
+        if (b.label == label) c.fail_at(lp, "a second L-system with label " + std::to_string(label));
+      blocks_.push_back(Block{label, {}, false, {}});
       seen_lsystem_ = true;
-      return;  // the label matters only for sub-L-systems
+      seen_end_ = false;
+      section_ = kProductions;
+      return;
     }
+    const bool main_block = blocks_.size() == 1;
     if (key == "endlsystem") {
       seen_end_ = true;
+      return;
+    }
+    // Only the main L-system's axiom, derivation length and depths are used;
+    // a sub-L-system's are read and dropped (CPFG manual 7.2).
+    if (!main_block && (key == "derivationlength" || key == "maximumdepth" || key == "ringlsystem")) {
+      Scope scope;
+      scope.globals = globals_;
+      if (key != "ringlsystem") cpfg::expression(c, scope);
+      return;
+    }
+    if (!main_block && key == "axiom") {
+      if (module_string(c, nullptr, "the axiom").empty()) c.fail_at(at, "the axiom cannot be empty");
       return;
     }
     if (key == "derivationlength") {
@@ -239,10 +267,11 @@ class CpfgParser {
       seen_axiom_ = true;
       model_.items.push_back(std::move(axiom));
     } else if (key == "ignore" || key == "consider") {
-      if (!filter_symbols_.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
-      filter_consider_ = key == "consider";
-      filter_at_ = token_at(at);
-      while (!c.done()) filter_symbols_.push_back(symbol(c));
+      Block& block = blocks_.back();
+      if (!block.filter_symbols.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
+      block.filter_consider = key == "consider";
+      block.filter_at = token_at(at);
+      while (!c.done()) block.filter_symbols.push_back(symbol(c));
     } else if (key == "seed") {
       if (section_ == kHomomorphism) c.fail_at(at, "seed: in a homomorphism is not supported yet");
       if (section_ == kDecomposition) c.fail_at(at, "seed: cannot be used in a decomposition (CPFG manual 4.4)");
@@ -348,8 +377,13 @@ class CpfgParser {
         }
       if (!is_separator(c.peek())) s += c.get();
     } else if (ch == '?') {
-      if (c.peek() == '(') c.fail_at(p, "sub-L-system calls ?(label,scale) are not supported yet");
+      // ?( is a sub-L-system call ?(label,scale); ?P ?H ?L ?U are queries.
       if (std::isalpha(static_cast<unsigned char>(c.peek()))) s += c.get();
+    } else if (ch == '~') {
+      // ~id: the view file's surface id (CPFG manual 6.7.1), one character.
+      if (is_separator(c.peek()) || c.peek() == '(' || c.peek() == ')')
+        c.fail_at(p, "expected a surface id after '~'");
+      s += c.get();
     }
     return s;
   }
@@ -392,7 +426,14 @@ class CpfgParser {
           c.skip_space();
           const Pos ap = c.pos();
           if (c.peek() == '"') c.fail_at(ap, "string parameters (" + sym + "(\"...\")) are not supported yet");
-          args.push_back(code_at(ap, "static_cast<float>(" + cpfg::expression(c, s) + ")"));
+          const std::string e = cpfg::expression(c, s);
+          if (sym == "?" && args.empty()) {
+            // A constant label is checked once every L-system is known.
+            char* end = nullptr;
+            const double label = std::strtod(e.c_str(), &end);
+            if (!e.empty() && *end == '\0') calls_.push_back({label, ap});
+          }
+          args.push_back(code_at(ap, "static_cast<float>(" + e + ")"));
         } while (c.accept(","));
         c.expect(")", std::string("',' or ')' in the parameters of ") + sym + " in " + what);
       }
@@ -452,7 +493,8 @@ class CpfgParser {
   }
 
   void production(Cursor& c, Pos at) {
-    if (!seen_axiom_ && section_ == kProductions) c.fail_at(at, "expected 'Axiom:' before the productions");
+    if (!seen_axiom_ && section_ == kProductions && blocks_.size() == 1)
+      c.fail_at(at, "expected 'Axiom:' before the productions");
     Rule rule;
     rule.kind = section_ == kProductions   ? abi::RuleKind::Production
                 : section_ == kDecomposition ? abi::RuleKind::Decomposition
@@ -519,24 +561,54 @@ class CpfgParser {
     if (!text.empty()) rule.body.push_back(BodyPart{BodyPart::kCode, code_at(at, text), {}, token_at(at)});
     rule.body.push_back(BodyPart{BodyPart::kProduce, {}, std::move(successor), token_at(at)});
     rules_.push_back(model_.items.size());
+    rule_blocks_.push_back(blocks_.size() - 1);
     model_.items.push_back(std::move(rule));
   }
 
   void finish() {
     // ignore: / consider: name symbols; each stands for all its module types.
-    if (!filter_symbols_.empty()) {
+    // Each L-system has its own.
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      const Block& block = blocks_[b];
+      if (block.filter_symbols.empty()) continue;
       ContextFilter filter;
-      filter.consider = filter_consider_;
-      filter.at = filter_at_;
-      for (const std::string& sym : filter_symbols_) {
+      filter.consider = block.filter_consider;
+      filter.at = block.filter_at;
+      for (const std::string& sym : block.filter_symbols) {
         if (sym == "[" || sym == "]" || sym == "%") {
           filter.names.push_back(sym == "[" ? "SB" : sym == "]" ? "EB" : "Cut");
           continue;
         }
         for (const std::string& name : by_symbol_[sym]) filter.names.push_back(name);
       }
+      const int index = static_cast<int>(model_.filters.size());
       model_.filters.push_back(filter);
-      for (std::size_t index : rules_) std::get<Rule>(model_.items[index]).filter = 0;
+      for (std::size_t r = 0; r < rules_.size(); ++r)
+        if (rule_blocks_[r] == b) std::get<Rule>(model_.items[rules_[r]]).filter = index;
+    }
+    // Sub-L-systems (CPFG manual 7.2): rules carry their L-system's label.
+    const std::string call = mangle("?", 2), ret = mangle("$", 0);
+    if (blocks_.size() > 1 || module_index_.count(call)) {
+      for (const auto& [label, at] : calls_) {
+        const bool known = std::any_of(blocks_.begin(), blocks_.end(), [&](const Block& b) { return b.label == label; });
+        if (!known) {
+          std::ostringstream text;
+          text << "?(" << label << ",...) calls L-system " << label << ", but no 'Lsystem: " << label
+               << "' is defined";
+          throw ModelError(SourceLocation{model_.files[static_cast<std::size_t>(at.file)], at.line, at.column},
+                           text.str());
+        }
+      }
+      if (has_seed_)
+        throw ModelError(SourceLocation{model_.main_file, 1, 1},
+                         "stochastic productions (seed:) in a model with sub-L-systems are not supported yet");
+      model_.cpfg_sub_lsystems = true;
+      model_.main_lsystem = blocks_.front().label;
+      for (const Block& b : blocks_) model_.lsystem_labels.push_back(b.label);
+      if (module_index_.count(call)) model_.call_module = call;
+      if (module_index_.count(ret)) model_.return_module = ret;
+      for (std::size_t r = 0; r < rules_.size(); ++r)
+        std::get<Rule>(model_.items[rules_[r]]).group = blocks_[rule_blocks_[r]].label;
     }
     // Control statements, with the seed first (cpfg: seed48({seed, 0, 155})).
     if (has_seed_) {
@@ -573,10 +645,17 @@ class CpfgParser {
   std::map<std::string, std::vector<std::string>> by_symbol_;
   std::map<std::string, double> total_probability_;
   std::set<std::string> globals_, arrays_;
-  std::vector<std::string> filter_symbols_;
-  bool filter_consider_ = false;
-  Token filter_at_;
+  // One per Lsystem: ... endlsystem; the first is the main L-system.
+  struct Block {
+    int label = 0;
+    std::vector<std::string> filter_symbols;
+    bool filter_consider = false;
+    Token filter_at;
+  };
+  std::vector<Block> blocks_;
+  std::vector<std::pair<double, Pos>> calls_;  // ?(label,s) with a constant label
   std::vector<std::size_t> rules_;
+  std::vector<std::size_t> rule_blocks_;  // the block of each of rules_
   std::map<int, std::string> control_;
   std::map<int, Pos> control_at_;
   Section section_ = kProductions;

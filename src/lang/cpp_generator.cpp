@@ -284,6 +284,11 @@ class CppGenerator {
            std::to_string(rule.at.line) + "},\n";
     }
     t += "  {}\n};\n";
+    if (!model_.lsystem_labels.empty()) {
+      t += "const int sylva_lsystem_labels[] = {";
+      for (int label : model_.lsystem_labels) t += std::to_string(label) + ",";
+      t += "};\n";
+    }
     t += "}  // namespace\n\n";
     auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
     t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";
@@ -298,8 +303,16 @@ class CppGenerator {
     t += "    " + fn(settings_[Setting::kDerivationLength]) + ", " + fn(settings_[Setting::kDecompositionDepth]) +
          ", " + fn(settings_[Setting::kInterpretationDepth]) + ", " + fn(settings_[Setting::kRing]) + ",\n";
     t += "    " + fn(control_[0]) + ", " + fn(control_[1]) + ", " + fn(control_[2]) + ", " + fn(control_[3]) + ",\n";
-    t += std::string("    ") + (model_.cpfg ? "::sylva::abi::kModelCpfg" : "0") + ", " +
-         (model_.cpfg_stochastic ? "&sylva_cpfg_before_module" : "nullptr") + ",\n";
+    std::string flags = model_.cpfg ? "::sylva::abi::kModelCpfg" : "0";
+    if (model_.cpfg_sub_lsystems) flags += " | ::sylva::abi::kModelSubLsystems";
+    t += "    " + flags + ", " + (model_.cpfg_stochastic ? "&sylva_cpfg_before_module" : "nullptr") + ",\n";
+    auto id_or_none = [&](const std::string& name) {
+      return name.empty() ? std::string("::sylva::abi::kNoModule") : std::to_string(module_id_.at(name));
+    };
+    t += "    " + std::to_string(model_.main_lsystem) + ", " +
+         (model_.lsystem_labels.empty() ? std::string("nullptr") : "sylva_lsystem_labels") + ", " +
+         std::to_string(model_.lsystem_labels.size()) + ", " + id_or_none(model_.call_module) + ", " +
+         id_or_none(model_.return_module) + ",\n";
     t += "  };\n  return &descriptor;\n}\n";
     out_.block(t);
   }

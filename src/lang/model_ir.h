@@ -106,6 +106,12 @@ struct Model {
   bool cpfg = false;
   // cpfg's stochastic draw: the model defines sylva_cpfg_before_module.
   bool cpfg_stochastic = false;
+  // cpfg sub-L-systems (abi::kModelSubLsystems): Rule::group is the label of
+  // a rule's L-system; `?(label,s)` and `$` are the modules named here.
+  bool cpfg_sub_lsystems = false;
+  int main_lsystem = 0;
+  std::vector<int> lsystem_labels;
+  std::string call_module, return_module;  // empty: the model has none
 };
 
 // The predefined modules of lpfgall.h, in id order.

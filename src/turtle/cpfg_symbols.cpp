@@ -6,6 +6,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
 #include "turtle/interpreter_impl.h"
 #include "turtle/trace.h"
@@ -19,12 +20,13 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"@M", O::MoveTo},
       {"+", O::Left}, {"-", O::Right}, {"&", O::Down}, {"^", O::Up}, {"\\", O::RollLeft}, {"/", O::RollRight},
       {"|", O::TurnAround},
-      // $ is ABOP's roll to vertical; cpfg also ends a sub-L-system with it,
-      // which Sylva does not have.
-      {"@v", O::RollToVertical}, {"$", O::RollToVertical},
+      // $ ends a sub-L-system's ?(label,s); elsewhere it is ABOP's roll to vertical.
+      {"@v", O::RollToVertical}, {"$", O::ReturnOrRollToVertical}, {"?", O::SubLsystemCall},
       {"@R", O::SetHeading},
       {"#", O::WidthUp}, {"!", O::WidthDown},
       {";", O::ColorUp}, {",", O::ColorDown},
+      // The Algorithmic Beauty of Plants' increment of the colour index.
+      {"'", O::ColorUp},
       {"{", O::PolygonOrCylinderStart}, {"}", O::PolygonOrCylinderEnd}, {".", O::VertexOrCylinderPoint},
       {"@o", O::CircleScreen}, {"@c", O::CircleHL}, {"@bo", O::CircleScreenBoundary}, {"@bc", O::CircleHLBoundary},
       {"@O", O::Sphere},
@@ -37,7 +39,9 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"?P", O::QueryPosition}, {"?H", O::QueryHeading}, {"?L", O::QueryLeft}, {"?U", O::QueryUp},
   };
   auto it = table.find(symbol);
-  return it == table.end() ? O::None : it->second;
+  if (it != table.end()) return it->second;
+  if (symbol.size() == 2 && symbol[0] == '~') return O::PredefinedSurface;  // ~id (CPFG manual 6.7.1)
+  return O::None;
 }
 
 CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::None), params_(types.size(), 0) {
@@ -147,6 +151,14 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::RollLeft: turn(corrected ? -angle : angle, 2); break;
     case O::RollRight: turn(corrected ? angle : -angle, 2); break;
     case O::TurnAround: frame.rotate_up(-1, 0); break;
+    case O::ReturnOrRollToVertical:
+      if (n == 0 && !sub_lsystem_scales_.empty()) {
+        // The end of a sub-L-system: the caller's scale again.
+        state_.scale = sub_lsystem_scales_.back();
+        sub_lsystem_scales_.pop_back();
+        break;
+      }
+      [[fallthrough]];
     case O::RollToVertical:
       if (!frame.roll_to_vertical(kVertical, kEpsilon)) note(" ignored: heading vertical");
       break;
@@ -255,6 +267,33 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::QueryHeading: query_cpfg(p, n, frame.heading, in_string); break;
     case O::QueryLeft: query_cpfg(p, n, frame.left, in_string); break;
     case O::QueryUp: query_cpfg(p, n, frame.up, in_string); break;
+
+    // ?(label,s): the sub-L-system's structure is scaled by s (CPFG manual
+    // 7.2) until its $.
+    case O::SubLsystemCall:
+      if (n != 2) {
+        note(" ignored: needs a label and a scale");
+        break;
+      }
+      sub_lsystem_scales_.push_back(state_.scale);
+      state_.scale *= param(p, 1);
+      break;
+
+    // ~id, ~id(s), ~id(sx,sy,sz): the view file's surface `surface: id file.s scale`.
+    case O::PredefinedSurface: {
+      const std::string name = types_.name(id);
+      const std::string key = name.substr(1);
+      const auto& ids = settings_.surface_ids;
+      const auto found = std::find(ids.begin(), ids.end(), key);
+      if (found == ids.end())
+        throw ModelError(name + where() + ": no surface has id '" + key + "' (the view file's 'surface: " + key +
+                         " file.s scale' gives it)");
+      Vec3 scale{1, 1, 1};
+      if (n >= 3) scale = vec_param(p, 0);
+      else if (n >= 1) scale = Vec3{param(p, 0), param(p, 0), param(p, 0)};
+      surface(static_cast<int>(found - ids.begin()), scale * state_.scale, name.c_str());
+      break;
+    }
   }
   if (trace_) {
     if (op >= O::Left && op <= O::SetHeading) {

@@ -34,6 +34,9 @@ enum class CpfgOp : std::uint8_t {
   SurfaceInit, SurfacePoint, SurfaceDraw,                               // @PS @PC @PD
   ElasticitySet, ElasticityUp, ElasticityDown,                          // @Ts @T @Td
   QueryPosition, QueryHeading, QueryLeft, QueryUp,                      // ?P ?H ?L ?U
+  SubLsystemCall,                                                       // ?(label,s)
+  ReturnOrRollToVertical,                                               // $
+  PredefinedSurface,                                                    // ~id
 };
 
 // The operation of a symbol, by its name (the symbol as written).

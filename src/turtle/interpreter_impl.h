@@ -97,6 +97,8 @@ struct TurtleInterpreter::Impl {
 
   TurtleState state_;
   std::vector<TurtleState> stack_;
+  // cpfg's ?(label,s): the scales to go back to at each open call's $.
+  std::vector<float> sub_lsystem_scales_;
   Provenance from_;  // the module being interpreted
   AngleCache angles_;
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "geometry/contour.h"
@@ -37,6 +38,9 @@ struct TurtleSettings {
   std::vector<Tropism> tropisms;     // SetElasticity(id, ...) counts from 1
   Tropism simple_tropism;            // the view file's "stropism", set by Elasticity(v)
   const std::vector<geometry::BezierSurface>* surfaces = nullptr;  // Surface(id, ...) counts from 0
+  // The cpfg id of each surface (`surface: l leaf.s 1`), drawn by ~l; empty
+  // for surfaces given as lpfg gives them.
+  std::vector<std::string> surface_ids;
   const std::vector<geometry::Contour>* contours = nullptr;        // CurrentContour(id) counts from 1
   const std::vector<geometry::PredefinedMesh>* meshes = nullptr;  // Mesh(id, ...) counts from 0
 

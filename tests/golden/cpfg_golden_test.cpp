@@ -183,11 +183,13 @@ TEST(CpfgErrors, probability_must_be_a_number) {
   EXPECT_NE(err.find("bad.l:4:12: error: expected a probability (a number)"), std::string::npos) << err;
 }
 
-TEST(CpfgErrors, sub_lsystems_are_not_supported_yet) {
+TEST(CpfgErrors, sub_lsystem_errors) {
   const std::string err = error_of("Lsystem: 1\nAxiom: A(1)\nA(t) --> ?(2,1)B(t-1)$\nendlsystem\n");
-  EXPECT_NE(err.find("not supported yet"), std::string::npos) << err;
-  const std::string err2 = error_of("Lsystem: 1\nAxiom: A\nendlsystem\nLsystem: 2\nAxiom: B\nendlsystem\n");
-  EXPECT_NE(err2.find("bad.l:4:1: error: a second L-system (sub-L-systems) is not supported yet"), std::string::npos) << err2;
+  EXPECT_NE(err.find("bad.l:3:12: error: ?(2,...) calls L-system 2, but no 'Lsystem: 2' is defined"), std::string::npos)
+      << err;
+  const std::string err2 = error_of("Lsystem: 1\nAxiom: A\nendlsystem\nA --> B\n");
+  EXPECT_NE(err2.find("bad.l:4:1: error: expected 'Lsystem:' (a sub-L-system) after 'endlsystem'"), std::string::npos)
+      << err2;
 }
 
 TEST(CpfgErrors, missing_endlsystem_with_lang_cpfg) {

@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 2;
+inline constexpr std::uint32_t kAbiVersion = 3;
 
 using ModuleId = std::uint16_t;
 
@@ -138,10 +138,23 @@ struct ModelDescriptor {
   // Called by a forward derivation step for every module of the old string
   // before its productions are tried (cpfg's stochastic draw); may be null.
   void (*before_module)(ModuleId id);
+  // Added in ABI version 3: cpfg's sub-L-systems (CPFG manual 7.2), when
+  // flags has kModelSubLsystems. Rule::group is then the label of the
+  // L-system a rule belongs to; `?(label,s)` (call_module) hands the modules
+  // after it to L-system `label` until its `$` (return_module), and a module
+  // is rewritten only by its own L-system's rules (no fallback to another).
+  int main_lsystem;              // the label of the first L-system
+  const int* lsystem_labels;     // every L-system's label
+  std::uint32_t lsystem_count;
+  ModuleId call_module;          // ?(label,s); kNoModule if the model has none
+  ModuleId return_module;        // $ without parameters; kNoModule if none
 };
+
+inline constexpr ModuleId kNoModule = 0xFFFF;
 
 // ModelDescriptor::flags
 inline constexpr std::uint32_t kModelCpfg = 1;  // a cpfg model: cpfg's string format and derivation
+inline constexpr std::uint32_t kModelSubLsystems = 2;  // cpfg sub-L-systems: see main_lsystem
 
 using ModelEntryPoint = const ModelDescriptor* (*)();
 inline constexpr const char* kEntryPointName = "sylva_model_v1";
