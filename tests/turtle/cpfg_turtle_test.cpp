@@ -155,6 +155,15 @@ TEST(CpfgTurtle, ColourSymbolsStepByTheIncrementOrSetTheirParameter) {
   EXPECT_EQ(s.segments[4].color, 9);
 }
 
+// ' is The Algorithmic Beauty of Plants' colour increment: 3, then 3+2, then 5+2.
+TEST(CpfgTurtle, ApostropheIncrementsTheColour) {
+  Scene s = draw_cpfg("apostrophe", "F'F'F", "initial color: 3\ncolor increment: 2");
+  ASSERT_EQ(s.segments.size(), 3u);
+  EXPECT_EQ(s.segments[0].color, 3);
+  EXPECT_EQ(s.segments[1].color, 5);
+  EXPECT_EQ(s.segments[2].color, 7);
+}
+
 TEST(CpfgTurtle, ColourWrapsAroundTheColourMapAndDefaultsTo128) {
   Scene wrapped = draw_cpfg("colour-wrap", "F,F", "initial color: 1\ncolor increment: 2");
   ASSERT_EQ(wrapped.segments.size(), 2u);
