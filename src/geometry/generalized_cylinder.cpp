@@ -23,6 +23,16 @@ void join_rings(std::uint32_t a, std::uint32_t b, int sides, bool closed, bool r
   }
 }
 
+Vec3 HermiteSegment::at(float t) const {
+  const float t2 = t * t, t3 = t2 * t;
+  return p0 * (2 * t3 - 3 * t2 + 1) + m0 * (t3 - 2 * t2 + t) + p1 * (-2 * t3 + 3 * t2) + m1 * (t3 - t2);
+}
+
+Vec3 HermiteSegment::derivative(float t) const {
+  const float t2 = t * t;
+  return p0 * (6 * t2 - 6 * t) + m0 * (3 * t2 - 4 * t + 1) + p1 * (-6 * t2 + 6 * t) + m1 * (3 * t2 - 2 * t);
+}
+
 float contour_orientation(const Vec3* contour, int sides) {
   float twice_area = 0;
   for (int i = 0; i < sides; ++i) {

@@ -1,6 +1,8 @@
-// Generalized cylinders (LPFG manual 5.8): a contour swept along the turtle's
-// path. The turtle places one ring of contour points at each control point;
-// consecutive rings are joined by a band of triangles.
+// Generalized cylinders (LPFG manual 5.8, CPFG manual 6.7.3): a contour swept
+// along the turtle's path. The turtle places a ring of contour points at each
+// control point, and in cpfg models `strips - 1` more between two control
+// points along the Hermite curve through them; consecutive rings are joined
+// by a band of triangles.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,15 @@ void place_ring(const Vec3* contour, int sides, Vec3 origin, Vec3 heading, Vec3 
 // counter-clockwise in its (left, up) plane; `reverse` flips them.
 void join_rings(std::uint32_t a, std::uint32_t b, int sides, bool closed, bool reverse,
                 std::vector<std::uint32_t>& indices);
+
+// A cubic Hermite segment from p0 to p1 with tangents m0 and m1:
+// p(t) = h00(t) p0 + h10(t) m0 + h01(t) p1 + h11(t) m1, with
+// h00 = 2t^3 - 3t^2 + 1, h10 = t^3 - 2t^2 + t, h01 = -2t^3 + 3t^2, h11 = t^3 - t^2.
+struct HermiteSegment {
+  Vec3 p0, m0, p1, m1;
+  Vec3 at(float t) const;
+  Vec3 derivative(float t) const;  // dp/dt
+};
 
 // Twice the signed area of a contour in its plane: positive when it runs
 // counter-clockwise.

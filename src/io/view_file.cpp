@@ -528,7 +528,7 @@ void Parser::initial_color(WordReader& in) {
   int color = in.integer("the initial colour index");
   if (color < 0 || color > 255) in.fail(at, "expected a colour index from 0 to 255, found '" + at.text + "'");
   view_.initial_color = color;
-  if (!in.at_end()) in.integer("the back side's colour index");
+  if (!in.at_end()) view_.initial_back_color = in.integer("the back side's colour index");
 }
 
 void Parser::initial_line_width(WordReader& in) {
@@ -549,7 +549,7 @@ void Parser::angle_factor(WordReader& in) {
 
 void Parser::color_increment(WordReader& in) {
   view_.color_increment = in.integer("the colour increment");
-  if (!in.at_end()) in.integer("the back side's colour increment");
+  if (!in.at_end()) view_.back_color_increment = in.integer("the back side's colour increment");
 }
 
 void Parser::finish() {
@@ -577,6 +577,8 @@ turtle::TurtleSettings ViewFile::turtle_settings() const {
   settings.angle_increment = angle_increment;
   settings.width_increment = line_width_increment;
   settings.color_increment = color_increment;
+  if (initial_back_color) settings.cpfg_initial_back_color = *initial_back_color;
+  settings.back_color_increment = back_color_increment.value_or(color_increment);
   settings.initial_scale = initial_scale;
   settings.scale_multiplier = scale_multiplier;
   settings.contour_sides = contour_sides;

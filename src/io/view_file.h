@@ -132,6 +132,8 @@ struct ViewFile {
   // cpfg's "initial color:" and "initial line width:", which cpfg view files
   // carry into lpfg models.
   std::optional<int> initial_color;
+  // Their second values, the back side's (cpfg's @; and @,).
+  std::optional<int> initial_back_color, back_color_increment;
   std::optional<float> initial_line_width;
   // cpfg's other turtle commands (CPFG manual 8.1.1), with its defaults: what
   // a cpfg model's symbols without parameters use. "angle factor: y" sets

@@ -118,6 +118,7 @@ const std::map<std::string, Function>& functions() {
       {"sign", {"sylva_cpfg_sign", 1, 1}},   {"ran", {"sylva_cpfg_ran", 1, 1}},
       {"nran", {"sylva_cpfg_nran", 2, 2}},   {"srand", {"sylva_cpfg_srand", 1, 1}},
       {"func", {"sylva_cpfg_func", 2, 2}},   {"pow", {"sylva_cpfg_pow", 2, 2}},
+      {"bran", {"sylva_cpfg_bran", 2, 2}},   {"biran", {"sylva_cpfg_biran", 2, 2}},
   };
   return table;
 }
@@ -140,7 +141,7 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
   }
   auto it = functions().find(name.text);
   if (it == functions().end()) {
-    static const std::set<std::string> later = {"bran", "biran", "fopen", "fclose", "fscan", "fscanf", "fprintf",
+    static const std::set<std::string> later = {"fopen", "fclose", "fscan", "fscanf", "fprintf",
                                                 "fflush", "curveX", "curveY", "curveZ", "curveGAL", "inblob",
                                                 "stop", "vvXmin"};
     if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
@@ -377,6 +378,38 @@ inline double sylva_cpfg_nran(double mean, double sd) {
   if (u1 <= 0) u1 = 1e-300;
   return mean + sd * ::std::sqrt(-2.0 * ::std::log(u1)) * ::std::cos(2.0 * 3.14159265358979323846 * u2);
 }
+// bran(a,b): a beta variate, X/(X+Y) of gamma variates X ~ G(a), Y ~ G(b)
+// (Marsaglia and Tsang's method); NaN unless a > 0 and b > 0.
+inline double sylva_cpfg_uniform_open() {
+  double u;
+  do u = ::sylva::rt::next_rand48();
+  while (u <= 0);
+  return u;
+}
+inline double sylva_cpfg_gamma(double a) {
+  if (a < 1) return sylva_cpfg_gamma(a + 1) * ::std::pow(sylva_cpfg_uniform_open(), 1 / a);
+  const double d = a - 1.0 / 3.0, c = 1 / ::std::sqrt(9 * d);
+  while (true) {
+    const double x = sylva_cpfg_nran(0, 1), v0 = 1 + c * x;
+    if (v0 <= 0) continue;
+    const double v = v0 * v0 * v0, u = sylva_cpfg_uniform_open();
+    if (u < 1 - 0.0331 * x * x * x * x || ::std::log(u) < 0.5 * x * x + d * (1 - v + ::std::log(v))) return d * v;
+  }
+}
+inline double sylva_cpfg_bran(double a, double b) {
+  if (!(a > 0) || !(b > 0)) return ::std::nan("");
+  const double x = sylva_cpfg_gamma(a), y = sylva_cpfg_gamma(b);
+  // Both too small to tell apart (a and b near 0): the limit, 0 or 1.
+  if (!(x + y > 0)) return ::sylva::rt::next_rand48() < a / (a + b) ? 1.0 : 0.0;
+  return x / (x + y);
+}
+// biran(n,p): how many of n uniform numbers fall below p.
+inline double sylva_cpfg_biran(double n, double p) {
+  const long trials = ::std::lround(n);
+  long hits = 0;
+  for (long k = 0; k < trials; ++k) hits += ::sylva::rt::next_rand48() < p;
+  return static_cast<double>(hits);
+}
 inline double sylva_cpfg_func(double id, double x) { return func(static_cast<int>(id), static_cast<float>(x)); }
 template <int N>
 void sylva_cpfg_format(const unsigned char* params, ::sylva::abi::TextSink* out) {
@@ -385,6 +418,37 @@ void sylva_cpfg_format(const unsigned char* params, ::sylva::abi::TextSink* out)
     ::std::memcpy(&v, params + 4 * k, sizeof v);
     char text[48];
     int n = ::std::snprintf(text, sizeof text, k ? ",%g" : "%g", static_cast<double>(v));
+    out->write(text, static_cast<::std::size_t>(n));
+  }
+}
+// @L("format", p1, ...): the string quoted with C escapes, as a cpfg model writes it.
+template <int N>
+void sylva_cpfg_format_label(const unsigned char* params, ::sylva::abi::TextSink* out) {
+  const char* s = nullptr;
+  ::std::memcpy(&s, params, sizeof s);
+  out->write("\"", 1);
+  for (const char* c = s ? s : ""; *c; ++c) {
+    char text[8];
+    int n = 1;
+    switch (*c) {
+      case '"': n = 2; ::std::memcpy(text, "\\\"", 2); break;
+      case '\\': n = 2; ::std::memcpy(text, "\\\\", 2); break;
+      case '\n': n = 2; ::std::memcpy(text, "\\n", 2); break;
+      case '\t': n = 2; ::std::memcpy(text, "\\t", 2); break;
+      default:
+        if (static_cast<unsigned char>(*c) < 32 || *c == 127)
+          n = ::std::snprintf(text, sizeof text, "\\%03o", static_cast<unsigned>(static_cast<unsigned char>(*c)));
+        else
+          text[0] = *c;
+    }
+    out->write(text, static_cast<::std::size_t>(n));
+  }
+  out->write("\"", 1);
+  for (int k = 0; k < N; ++k) {
+    float v;
+    ::std::memcpy(&v, params + sizeof s + 4 * k, sizeof v);
+    char text[48];
+    int n = ::std::snprintf(text, sizeof text, ",%g", static_cast<double>(v));
     out->write(text, static_cast<::std::size_t>(n));
   }
 }

@@ -403,6 +403,37 @@ class CpfgParser {
     return name;
   }
 
+  // @L("format", p1, ...): a const char* (the literal, kept by the compiled
+  // model) and `params - 1` floats.
+  std::string label_module(std::size_t params, Pos at) {
+    const std::string name = mangle("@L", params);
+    if (!module_index_.count(name)) {
+      std::vector<std::string> types(params, "float");
+      types[0] = "const char*";
+      module_index_[name] = model_.modules.size();
+      model_.modules.push_back(ModuleDecl{name, types, token_at(at), "@L"});
+      by_symbol_["@L"].push_back(name);
+    }
+    return name;
+  }
+
+  // A "..." literal (the cursor at its quote), returned as written.
+  static std::string string_literal(Cursor& c) {
+    const Pos start = c.pos();
+    std::string text(1, c.get());
+    while (true) {
+      const char ch = c.get();
+      if (ch == '\0') c.fail_at(start, "unterminated string");
+      text += ch;
+      if (ch == '"') return text;
+      if (ch == '\\') {
+        const char next = c.get();
+        if (next == '\0') c.fail_at(start, "unterminated string");
+        text += next;
+      }
+    }
+  }
+
   // Modules up to the end of the line or a stop token (":" after a successor).
   std::vector<ModuleCall> module_string(Cursor& c, Scope* scope, const char* what) {
     std::vector<ModuleCall> calls;
@@ -420,12 +451,20 @@ class CpfgParser {
       }
       std::string sym = symbol(c);
       std::vector<Code> args;
+      bool label = false;  // @L("format", p1, ...): a string, then floats
       if (c.peek() == '(') {
         c.get();
         do {
           c.skip_space();
           const Pos ap = c.pos();
-          if (c.peek() == '"') c.fail_at(ap, "string parameters (" + sym + "(\"...\")) are not supported yet");
+          if (c.peek() == '"') {
+            if (sym != "@L" || !args.empty())
+              c.fail_at(ap, "string parameters (" + sym + "(\"...\")) are supported only as the first of @L");
+            // The literal as written is a C string literal: the compiled model keeps it.
+            args.push_back(code_at(ap, string_literal(c)));
+            label = true;
+            continue;
+          }
           const std::string e = cpfg::expression(c, s);
           if (sym == "?" && args.empty()) {
             // A constant label is checked once every L-system is known.
@@ -437,8 +476,11 @@ class CpfgParser {
         } while (c.accept(","));
         c.expect(")", std::string("',' or ')' in the parameters of ") + sym + " in " + what);
       }
+      // A bare @L is a module without parameters: nothing to print.
+      if (sym == "@L" && !label && !args.empty())
+        c.fail_at(p, "@L takes a string first: @L(\"label\") or @L(\"format\",p1,...)");
       ModuleCall call;
-      call.name = module_name(sym, args.size(), p, c);
+      call.name = label ? label_module(args.size(), p) : module_name(sym, args.size(), p, c);
       call.args = std::move(args);
       call.at = token_at(p);
       calls.push_back(std::move(call));
@@ -468,6 +510,7 @@ class CpfgParser {
         continue;
       }
       std::string sym = symbol(c);
+      if (sym == "@L" && c.peek() == '(') c.fail_at(p, "@L(...) in a predecessor is not supported yet");
       std::vector<std::string> formals;
       if (c.peek() == '(') {
         c.get();

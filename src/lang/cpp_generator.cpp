@@ -247,6 +247,13 @@ class CppGenerator {
     for (std::size_t k = 0; k < model_.modules.size(); ++k) {
       const ModuleDecl& m = model_.modules[k];
       const std::string& shown = m.display_name.empty() ? m.name : m.display_name;
+      if (model_.cpfg && k >= predefined && !m.param_types.empty() && m.param_types[0] == "const char*") {
+        // @L("format", p1, ...): the string as cpfg writes it, then the floats.
+        const std::size_t floats = m.param_types.size() - 1;
+        t += "  ::sylva::abi::ModuleType{" + quoted(shown) + ", " + std::to_string(sizeof(const char*) + 4 * floats) +
+             "u, &sylva_cpfg_format_label<" + std::to_string(floats) + ">},\n";
+        continue;
+      }
       if (model_.cpfg && k >= predefined) {
         // cpfg prints every parameter as %g of its float.
         t += "  ::sylva::abi::ModuleType{" + quoted(shown) + ", " + std::to_string(4 * m.param_types.size()) +

@@ -31,12 +31,15 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"@o", O::CircleScreen}, {"@c", O::CircleHL}, {"@bo", O::CircleScreenBoundary}, {"@bc", O::CircleHLBoundary},
       {"@O", O::Sphere},
       {"@Gs", O::CylinderStart}, {"@Gc", O::CylinderPoint}, {"@Ge", O::CylinderEnd},
+      {"@Gt", O::CylinderTangents},
       {"@#", O::Contour}, {"@!", O::ContourSides},
       {"@D", O::SetScale}, {"@Di", O::ScaleUp}, {"@Dd", O::ScaleDown},
       {"@Tx", O::Texture},
       {"@PS", O::SurfaceInit}, {"@PC", O::SurfacePoint}, {"@PD", O::SurfaceDraw},
       {"@Ts", O::ElasticitySet}, {"@T", O::ElasticityUp}, {"@Td", O::ElasticityDown},
       {"?P", O::QueryPosition}, {"?H", O::QueryHeading}, {"?L", O::QueryLeft}, {"?U", O::QueryUp},
+      {"@L", O::Label}, {"@Tp", O::MinimizeTwist}, {"@Tf", O::ForceTwist},
+      {"@;", O::BackColorUp}, {"@,", O::BackColorDown},
   };
   auto it = table.find(symbol);
   if (it != table.end()) return it->second;
@@ -54,8 +57,90 @@ CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::
   for (std::size_t id = rt::mid::PredefinedCount; id < types.size(); ++id) {
     const auto m = static_cast<ModuleId>(id);
     ops_[id] = cpfg_op(types.name(m));
-    params_[id] = static_cast<std::uint8_t>(std::min<std::uint32_t>(types[m].param_size / 4, 255));
+    std::uint32_t size = types[m].param_size;
+    if (ops_[id] == CpfgOp::Label) {
+      // @L("format", p1, ...): the string's pointer, then the floats.
+      if (size < sizeof(const char*)) ops_[id] = CpfgOp::None;
+      else size -= sizeof(const char*);
+    }
+    params_[id] = static_cast<std::uint8_t>(std::min<std::uint32_t>(size / 4, 255));
   }
+}
+
+std::string format_cpfg_label(std::string_view format, const float* values, int count) {
+  std::string out;
+  int used = 0;
+  const std::size_t size = format.size();
+  auto digits = [&](std::size_t& j) {
+    const std::size_t from = j;
+    while (j < size && format[j] >= '0' && format[j] <= '9') ++j;
+    return j - from;
+  };
+  std::size_t i = 0;
+  while (i < size) {
+    if (format[i] != '%') {
+      out += format[i++];
+      continue;
+    }
+    if (i + 1 < size && format[i + 1] == '%') {
+      out += '%';
+      i += 2;
+      continue;
+    }
+    // %[flags][width][.precision][length]conversion; the length (h l ll L q j
+    // z t) is dropped: the value is passed as a double or a long long.
+    std::string spec = "%";
+    std::size_t j = i + 1;
+    while (j < size && std::string_view("-+ #0").find(format[j]) != std::string_view::npos) spec += format[j++];
+    std::size_t at = j;
+    bool fits = digits(j) <= 3;
+    spec += format.substr(at, j - at);
+    if (j < size && format[j] == '.') {
+      at = j++;
+      fits = fits && digits(j) <= 3;
+      spec += format.substr(at, j - at);
+    }
+    while (j < size && std::string_view("hlLqjzt").find(format[j]) != std::string_view::npos) ++j;
+    const char conversion = j < size ? format[j] : '\0';
+    const bool real = conversion != '\0' && std::string_view("fFeEgGaA").find(conversion) != std::string_view::npos;
+    const bool integer = conversion != '\0' && std::string_view("diouxX").find(conversion) != std::string_view::npos;
+    const double v = used < count ? static_cast<double>(values[used]) : 0.0;
+    // A value too large for a long long is printed as a number, not converted.
+    const bool representable = real || (std::isfinite(v) && std::fabs(v) < 9.2e18);
+    if (!fits || !(real || integer) || used >= count || !representable) {
+      const std::size_t end = std::min(size, j + 1);
+      out += format.substr(i, end - i);
+      i = end;
+      continue;
+    }
+    ++used;
+    int n;
+    char buffer[64];
+    std::string text;
+    if (real) {
+      spec += conversion;
+      n = std::snprintf(buffer, sizeof buffer, spec.c_str(), v);
+      if (n >= static_cast<int>(sizeof buffer)) {
+        text.resize(static_cast<std::size_t>(n) + 1);
+        std::snprintf(text.data(), text.size(), spec.c_str(), v);
+      }
+    } else {
+      spec += "ll";
+      spec += conversion;
+      const long long whole = static_cast<long long>(v);  // cpfg's C truncates toward 0
+      n = conversion == 'd' || conversion == 'i'
+              ? std::snprintf(buffer, sizeof buffer, spec.c_str(), whole)
+              : std::snprintf(buffer, sizeof buffer, spec.c_str(), static_cast<unsigned long long>(whole));
+      if (n >= static_cast<int>(sizeof buffer)) {
+        text.resize(static_cast<std::size_t>(n) + 1);
+        if (conversion == 'd' || conversion == 'i') std::snprintf(text.data(), text.size(), spec.c_str(), whole);
+        else std::snprintf(text.data(), text.size(), spec.c_str(), static_cast<unsigned long long>(whole));
+      }
+    }
+    if (n > 0) out.append(text.empty() ? buffer : text.data(), static_cast<std::size_t>(n));
+    i = j + 1;
+  }
+  return out;
 }
 
 std::vector<ModuleId> CpfgSymbols::query_modules() const {
@@ -75,6 +160,12 @@ float param(const unsigned char* p, int k) {
   return v;
 }
 int int_param(const unsigned char* p, int k) { return static_cast<int>(std::lround(param(p, k))); }
+// @L's string: the pointer before its floats.
+const char* label_text(const unsigned char* p) {
+  const char* text = nullptr;
+  std::memcpy(&text, p, sizeof text);
+  return text ? text : "";
+}
 Vec3 vec_param(const unsigned char* p, int k) { return {param(p, k), param(p, k + 1), param(p, k + 2)}; }
 
 // World up, for @v: models grow up the screen, along +y.
@@ -104,7 +195,19 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
   if (op == O::None) return;  // cpfg ignores symbols that are not the turtle's
   const int n = cpfg_->params(id);
   from_ = Provenance{source_index, id};
-  if (trace_) {
+  // @L's floats follow its string.
+  const unsigned char* label_values = op == O::Label ? p + sizeof(const char*) : nullptr;
+  if (trace_ && label_values) {
+    *trace_ += types_.name(id);
+    *trace_ += "(\"";
+    *trace_ += label_text(p);
+    *trace_ += '"';
+    for (int k = 0; k < n; ++k) {
+      *trace_ += ',';
+      append_number(*trace_, param(label_values, k));
+    }
+    *trace_ += ')';
+  } else if (trace_) {
     *trace_ += types_.name(id);
     if (n > 0) {
       *trace_ += '(';
@@ -123,6 +226,8 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
   const float step = (n > 0 ? param(p, 0) : 1.0f) * state_.scale;
   // A circle or sphere: the parameter is its diameter, the line width by default.
   const float radius = (n > 0 ? param(p, 0) : state_.width) * state_.scale / 2;
+  // A generalized cylinder's strips (@Gc, .(strips), @Ge): its parameter or 1.
+  const int strips = n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1;
   switch (op) {
     case O::None: break;
     case O::Push: push(); break;
@@ -197,7 +302,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       else end_polygon();
       break;
     case O::VertexOrCylinderPoint:
-      if (n > 0) cylinder_point();
+      if (n > 0) cylinder_point(strips);
       else polygon_vertex();
       break;
 
@@ -208,8 +313,19 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::Sphere: sphere(radius); break;
 
     case O::CylinderStart: start_cylinder(); break;
-    case O::CylinderPoint: cylinder_point(); break;
-    case O::CylinderEnd: end_cylinder(); break;
+    // @Gc(strips), @Ge(strips): the bands since the previous control point.
+    case O::CylinderPoint: cylinder_point(strips); break;
+    case O::CylinderEnd: end_cylinder(strips); break;
+    case O::CylinderTangents:
+      // @Gt(start,end): the Hermite tangent coefficients of the stretches
+      // ended by the next control points; one parameter sets both.
+      if (n == 0) {
+        note(" ignored: needs tangent coefficients");
+        break;
+      }
+      state_.cylinder_tangent_start = param(p, 0);
+      state_.cylinder_tangent_end = n > 1 ? param(p, 1) : param(p, 0);
+      break;
     case O::Contour: {
       const int c = n > 0 ? int_param(p, 0) : 0;
       check_contour(c, "@#");
@@ -294,9 +410,56 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       surface(static_cast<int>(found - ids.begin()), scale * state_.scale, name.c_str());
       break;
     }
+
+    // @L("format", p1, ...): a label at the turtle's position (CPFG manual 6.10).
+    case O::Label: {
+      std::vector<float> values(static_cast<std::size_t>(n));
+      for (int k = 0; k < n; ++k) values[static_cast<std::size_t>(k)] = param(label_values, k);
+      std::string text = format_cpfg_label(label_text(p), values.data(), n);
+      if (trace_) *trace_ += " \"" + text + "\"";
+      note_position(" at ", state_.position);
+      if (!scene_) break;
+      geometry::Label l;
+      l.position = state_.position;
+      l.text = std::move(text);
+      l.color = state_.color;
+      l.from = from_;
+      scene_->labels.push_back(std::move(l));
+      break;
+    }
+
+    // @Tp: up and left carried from the last step's to the current heading
+    // by the smallest rotation between the two headings (parallel
+    // transport), which undoes the twist (/ \) since that step.
+    case O::MinimizeTwist: {
+      const Vec3 from = state_.step_heading, to = frame.heading;
+      const Vec3 axis = cross(from, to);
+      const float s = length(axis), c = dot(from, to);
+      Vec3 up = state_.step_up;
+      if (s > 1e-6f) up = up * c + cross(axis / s, up) * s + (axis / s) * (dot(axis / s, up) * (1 - c));
+      else if (c < 0) note(" (heading reversed: the last step's up kept)");
+      // Exactly across the heading (it may have drifted from it).
+      up = up - to * dot(up, to);
+      if (length(up) < kEpsilon || !frame.set_head_up(to, up, kEpsilon)) note(" ignored: up along the heading");
+      break;
+    }
+    // @Tf: this turtle's tropisms bend the heading by the smallest rotation,
+    // which keeps the twist of / and \ already; there is nothing to force.
+    case O::ForceTwist: note(" (twist is always kept)"); break;
+
+    // @;(n) @,(n): the back side's colour index, stepped from the front's
+    // until set. Outputs draw one side: the Scene keeps the front's colour.
+    case O::BackColorUp:
+    case O::BackColorDown: {
+      const int current = state_.back_color >= 0 ? state_.back_color : state_.color;
+      const int by = op == O::BackColorUp ? settings_.back_color_increment : -settings_.back_color_increment;
+      state_.back_color = wrap_color(n > 0 ? int_param(p, 0) : current + by);
+      if (trace_) *trace_ += " back colour " + std::to_string(state_.back_color);
+      break;
+    }
   }
   if (trace_) {
-    if (op >= O::Left && op <= O::SetHeading) {
+    if ((op >= O::Left && op <= O::SetHeading) || op == O::MinimizeTwist) {
       note_position(" H ", frame.heading);
       note_position(" L ", frame.left);
       note_position(" U ", frame.up);

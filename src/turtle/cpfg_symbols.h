@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "lstring/module_types.h"
@@ -28,6 +30,7 @@ enum class CpfgOp : std::uint8_t {
   CircleScreen, CircleHL, CircleScreenBoundary, CircleHLBoundary,      // @o @c @bo @bc
   Sphere,                                                               // @O
   CylinderStart, CylinderPoint, CylinderEnd,                            // @Gs @Gc @Ge
+  CylinderTangents,                                                     // @Gt
   Contour, ContourSides,                                                // @# @!
   SetScale, ScaleUp, ScaleDown,                                         // @D @Di @Dd
   Texture,                                                              // @Tx
@@ -37,10 +40,20 @@ enum class CpfgOp : std::uint8_t {
   SubLsystemCall,                                                       // ?(label,s)
   ReturnOrRollToVertical,                                               // $
   PredefinedSurface,                                                    // ~id
+  Label,                                                                // @L("format",p1,...)
+  MinimizeTwist, ForceTwist,                                            // @Tp @Tf
+  BackColorUp, BackColorDown,                                           // @; @,
 };
 
 // The operation of a symbol, by its name (the symbol as written).
 CpfgOp cpfg_op(const std::string& symbol);
+
+// @L's text: `format` printf-style with the `count` values. Only %f %F %e %E
+// %g %G %a %A (the value) and %d %i %o %u %x %X (its integer part) with
+// flags, a width and a precision of up to three digits each consume a value;
+// %% is '%'; any other conversion, or one past the last value, is written as
+// it stands.
+std::string format_cpfg_label(std::string_view format, const float* values, int count);
 
 // True for ?P ?H ?L ?U: modules the turtle writes its state into.
 inline bool is_query(CpfgOp op) { return op >= CpfgOp::QueryPosition && op <= CpfgOp::QueryUp; }
@@ -51,7 +64,7 @@ class CpfgSymbols {
 
   std::size_t size() const { return ops_.size(); }
   CpfgOp op(ModuleId id) const { return id < ops_.size() ? ops_[id] : CpfgOp::None; }
-  // Number of float parameters of a module of this type.
+  // Number of float parameters of a module of this type (@L's after its string).
   int params(ModuleId id) const { return id < params_.size() ? params_[id] : 0; }
   // The module ids of ?P ?H ?L ?U, for the derivation's query pass.
   std::vector<ModuleId> query_modules() const;

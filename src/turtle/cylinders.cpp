@@ -1,8 +1,20 @@
-// Generalized cylinders (LPFG manual 5.8): StartGC, PointGC and EndGC record
-// control points (the turtle's position, frame, width and contour at each);
-// the cylinder is drawn when it ends, one ring of contour points per control
-// point, joined by bands of triangles.
+// Generalized cylinders (LPFG manual 5.8, CPFG manual 6.7.3): StartGC,
+// PointGC and EndGC (cpfg's @Gs @Gc @Ge, {(t) .(s) }(t)) record control
+// points (the turtle's position, frame, width and contour at each); the
+// cylinder is drawn when it ends, a ring of contour points per control point,
+// joined by bands of triangles.
+//
+// Between two control points the axis is the cubic Hermite curve through
+// them, its tangents along the turtle's heading at each, of length the
+// distance between them times @Gt's coefficients (1.2 by default). A stretch
+// of `strips` bands (cpfg's @Gc(strips); 1 by default and always in L+C,
+// whose manual describes no interpolation) has `strips - 1` rings inside at
+// t = k / strips: their frames are the first control point's carried along
+// the curve by parallel transport, with the roll between the two control
+// frames spread evenly; their radius, contour scale and contour go linearly
+// from one control point to the next. One strip is today's straight band.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "geometry/face_normals.h"
@@ -49,7 +61,7 @@ bool TurtleInterpreter::Impl::cylinder_open(const TurtleState& s) const {
   return c.open && c.serial == s.cylinder_serial;
 }
 
-TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point() const {
+TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point(int strips) const {
   CylinderPoint p;
   p.position = state_.position;
   p.frame = state_.frame;
@@ -61,6 +73,9 @@ TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point() 
   p.scale_up = state_.contour_scale_up;
   p.color = state_.color;
   p.from = from_;
+  p.strips = std::max(1, strips);
+  p.tangent_start = state_.cylinder_tangent_start;
+  p.tangent_end = state_.cylinder_tangent_end;
   return p;
 }
 
@@ -82,38 +97,58 @@ void TurtleInterpreter::Impl::start_cylinder() {
   const geometry::Contour& shape = contour(state_.contour);
   int sides = state_.contour_sides > 0 ? state_.contour_sides : shape.samples > 0 ? shape.samples : settings_.contour_sides;
   c.sides = std::max(3, sides);
-  c.points.push_back(control_point());
+  c.points.push_back(control_point(1));
   state_.cylinder = static_cast<int>(slot);
   state_.cylinder_serial = c.serial;
   note_position(" at ", state_.position);
 }
 
-void TurtleInterpreter::Impl::cylinder_point() {
+void TurtleInterpreter::Impl::cylinder_point(int strips) {
   if (!cylinder_open(state_)) {
     note(" ignored: no generalized cylinder");
     return;
   }
   Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  c.points.push_back(control_point());
+  c.points.push_back(control_point(strips));
   if (trace_) *trace_ += " point " + std::to_string(c.points.size());
   note_position(" at ", state_.position);
 }
 
-void TurtleInterpreter::Impl::end_cylinder() {
+void TurtleInterpreter::Impl::end_cylinder(int strips) {
   if (!cylinder_open(state_)) {
     note(" ignored: no generalized cylinder");
     return;
   }
   Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  c.points.push_back(control_point());
+  c.points.push_back(control_point(strips));
   close_cylinder(state_.cylinder);
   state_.cylinder = -1;
 }
 
+namespace {
+
+// The number of rings of a cylinder: one per control point and strips - 1
+// inside each stretch.
+template <class Points>
+std::size_t ring_count(const Points& points) {
+  std::size_t rings = points.empty() ? 0 : 1;
+  for (std::size_t k = 1; k < points.size(); ++k) rings += static_cast<std::size_t>(points[k].strips);
+  return rings;
+}
+
+// The right-handed angle around unit `axis` taking `from` to `to` (both
+// across the axis).
+float angle_around(Vec3 axis, Vec3 from, Vec3 to) {
+  return std::atan2(dot(cross(from, to), axis), dot(from, to));
+}
+
+}  // namespace
+
 void TurtleInterpreter::Impl::close_cylinder(int index) {
   Cylinder& c = cylinders_[static_cast<std::size_t>(index)];
   if (trace_)
-    *trace_ += " cylinder of " + std::to_string(c.points.size()) + " rings x " + std::to_string(c.sides) + " sides";
+    *trace_ += " cylinder of " + std::to_string(ring_count(c.points)) + " rings x " + std::to_string(c.sides) +
+               " sides";
   draw_cylinder(index);
   c.open = false;
 }
@@ -122,6 +157,7 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
   const Cylinder& c = cylinders_[static_cast<std::size_t>(index)];
   if (!scene_ || c.points.size() < 2) return;
   const int sides = c.sides;
+  const auto n_sides = static_cast<std::size_t>(sides);
   const CylinderPoint& head = c.points.front();
   const bool closed = contour(head.contour).closed;
   // Bands face outward for a counter-clockwise contour; a clockwise one is
@@ -131,24 +167,72 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
                                               sides) < 0;
 
   const auto first_vertex = static_cast<std::uint32_t>(scene_->positions.size());
-  for (const CylinderPoint& p : c.points) {
+  auto control_ring = [&](const CylinderPoint& p) {
     const float radius = p.width / 2;  // the width is the diameter, as for lines
     geometry::place_ring(contour_points(p.contour, p.blend_contour, p.blend, sides), sides, p.position,
                          p.frame.heading, p.frame.left, p.frame.up, radius * p.scale_left, radius * p.scale_up,
                          scene_->positions);
-  }
+  };
+  control_ring(head);
   const auto first_index = static_cast<std::uint32_t>(scene_->indices.size());
-  // A group per stretch between control points, made by the module that
-  // ended the stretch, so that each stretch knows its own module.
   for (std::size_t k = 0; k + 1 < c.points.size(); ++k) {
+    const CylinderPoint& a = c.points[k];
+    const CylinderPoint& b = c.points[k + 1];
+    const auto stretch_first = static_cast<std::uint32_t>(scene_->positions.size()) - static_cast<std::uint32_t>(sides);
+    const float distance = length(b.position - a.position);
+    // Rings inside the stretch: none when the control points coincide (the
+    // curve has no length to spread them along).
+    const int strips = distance < kEpsilon ? 1 : b.strips;
+    if (strips > 1) {
+      const geometry::HermiteSegment curve{a.position, a.frame.heading * (distance * b.tangent_start), b.position,
+                                           b.frame.heading * (distance * b.tangent_end)};
+      // The contours at both ends, kept: contour_points reuses its buffer.
+      const Vec3* from_points = contour_points(a.contour, a.blend_contour, a.blend, sides);
+      ring_from_.assign(from_points, from_points + sides);
+      const Vec3* to_points = contour_points(b.contour, b.blend_contour, b.blend, sides);
+      ring_to_.assign(to_points, to_points + sides);
+      ring_between_.resize(n_sides);
+      // Parallel transport of the first frame along the curve, then the roll
+      // left between it and the last frame, spread over the stretch.
+      std::vector<Frame> frames(static_cast<std::size_t>(strips) + 1);
+      frames[0] = a.frame;
+      for (int j = 1; j <= strips; ++j) {
+        const float t = static_cast<float>(j) / static_cast<float>(strips);
+        Frame f = frames[static_cast<std::size_t>(j) - 1];
+        Vec3 direction = j == strips ? b.frame.heading : curve.derivative(t);
+        if (length(direction) < kEpsilon * distance) direction = a.frame.heading * (1 - t) + b.frame.heading * t;
+        f.set_heading(direction, kEpsilon);  // unchanged where the curve stops and the headings cancel
+        f.orthonormalize();
+        frames[static_cast<std::size_t>(j)] = f;
+      }
+      const Frame& carried = frames.back();
+      const float roll = angle_around(b.frame.heading, carried.up, b.frame.up);
+      const float radius_a = a.width / 2, radius_b = b.width / 2;
+      for (int j = 1; j < strips; ++j) {
+        const float t = static_cast<float>(j) / static_cast<float>(strips);
+        Frame f = frames[static_cast<std::size_t>(j)];
+        f.rotate(f.heading, std::cos(roll * t), std::sin(roll * t));
+        for (std::size_t i = 0; i < n_sides; ++i) ring_between_[i] = ring_from_[i] * (1 - t) + ring_to_[i] * t;
+        const float radius = radius_a * (1 - t) + radius_b * t;
+        const float scale_left = a.scale_left * (1 - t) + b.scale_left * t;
+        const float scale_up = a.scale_up * (1 - t) + b.scale_up * t;
+        geometry::place_ring(ring_between_.data(), sides, curve.at(t), f.heading, f.left, f.up, radius * scale_left,
+                             radius * scale_up, scene_->positions);
+      }
+    }
+    control_ring(b);
+    // A group per stretch between control points, made by the module that
+    // ended the stretch, so that each stretch knows its own module.
     geometry::TriangleGroup g;
     g.kind = geometry::TriangleGroup::Kind::GeneralizedCylinder;
     g.first_index = static_cast<std::uint32_t>(scene_->indices.size());
-    const auto ring = first_vertex + static_cast<std::uint32_t>(k * static_cast<std::size_t>(sides));
-    geometry::join_rings(ring, ring + static_cast<std::uint32_t>(sides), sides, closed, reverse, scene_->indices);
+    for (int j = 0; j < strips; ++j) {
+      const auto ring = stretch_first + static_cast<std::uint32_t>(j * sides);
+      geometry::join_rings(ring, ring + static_cast<std::uint32_t>(sides), sides, closed, reverse, scene_->indices);
+    }
     g.index_count = static_cast<std::uint32_t>(scene_->indices.size()) - g.first_index;
-    g.color = c.points[k + 1].color;
-    g.from = c.points[k + 1].from;
+    g.color = b.color;
+    g.from = b.from;
     scene_->groups.push_back(g);
   }
   geometry::set_normals_from_faces(*scene_, first_vertex,

@@ -48,6 +48,7 @@ TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, const ModuleTypes&
                 ? settings.cpfg_symbols
                 : std::make_shared<const CpfgSymbols>(types);
     state_.color = settings.cpfg_initial_color;
+    state_.back_color = settings.cpfg_initial_back_color;
     state_.scale = settings.initial_scale;
   }
   for (const Tropism& t : settings.tropisms) elasticity_.push_back(t.elasticity);
@@ -87,6 +88,8 @@ void TurtleInterpreter::Impl::forward(float distance, bool draw, bool polygon_ve
   const Vec3 start = state_.position;
   const Vec3 end = start + state_.frame.heading * distance;
   state_.position = end;
+  state_.step_heading = state_.frame.heading;
+  state_.step_up = state_.frame.up;
   // Inside a generalized cylinder the cylinder is the drawing.
   if (draw && distance != 0 && !cylinder_open(state_)) add_segment(start, end);
   if (trace_) {

@@ -80,10 +80,12 @@ struct TurtleInterpreter::Impl {
   const geometry::Contour& contour(int id) const;
   const Vec3* contour_points(int id, int blend_id, float blend, int sides);
   struct CylinderPoint;
-  CylinderPoint control_point() const;
+  CylinderPoint control_point(int strips) const;
   void start_cylinder();
-  void cylinder_point();
-  void end_cylinder();
+  // `strips`: the bands between this control point and the previous one
+  // (cpfg's @Gc(strips), .(strips), @Ge(strips)); L+C's are always 1.
+  void cylinder_point(int strips = 1);
+  void end_cylinder(int strips = 1);
   bool cylinder_open(const TurtleState& s) const;
   void close_cylinder(int index);
   void draw_cylinder(int index);
@@ -130,6 +132,10 @@ struct TurtleInterpreter::Impl {
     float scale_left = 1, scale_up = 1;
     int color = 1;
     Provenance from;
+    // The stretch from the previous control point to this one: its bands
+    // (rings at the Hermite parameters k / strips) and tangent coefficients.
+    int strips = 1;
+    float tangent_start = 1.2f, tangent_end = 1.2f;
   };
   struct Cylinder {
     std::vector<CylinderPoint> points;
@@ -146,6 +152,7 @@ struct TurtleInterpreter::Impl {
   };
   std::deque<ResampledContour> resampled_;  // references stay valid as it grows
   std::vector<Vec3> blended_;
+  std::vector<Vec3> ring_from_, ring_to_, ring_between_;  // contours of a stretch's inner rings
 
   // The L-system-defined surface (InitSurface, SurfacePoint, DrawSurface).
   geometry::BezierPatch lsystem_surface_;

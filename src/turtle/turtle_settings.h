@@ -54,6 +54,10 @@ struct TurtleSettings {
   // A cpfg model's first colour when the view file gives no initial color
   // (an L+C model's is initial_color).
   int cpfg_initial_color = 128;
+  // The back side's (@; @,): the second values of initial color and color
+  // increment; -1: the back side is coloured as the front until @; or @,.
+  int cpfg_initial_back_color = -1;
+  int back_color_increment = 1;
   float initial_scale = 1;
   float scale_multiplier = 1;
   // A cpfg model's symbol table, built once per model (Simulation does);

@@ -17,6 +17,12 @@ struct TurtleState {
   // cpfg's turtle scale (@D, @Di, @Dd): multiplies a cpfg model's steps and
   // circle and sphere sizes.
   float scale = 1;
+  // cpfg's @; @,: the back side's colour index (-1: as the front). The Scene
+  // has one colour per primitive, so outputs draw both sides in the front's.
+  int back_color = -1;
+  // The heading and up of the last step (F f G g ...), which cpfg's @Tp
+  // carries to the current heading without twist.
+  Vec3 step_heading{0, 1, 0}, step_up{0, 0, 1};
 
   // SetCoordinateSystem: MoveTo, LineTo ... points are origin + x*px + y*py + z*pz.
   Vec3 origin{0, 0, 0};
@@ -29,6 +35,9 @@ struct TurtleState {
   float blend = 0;
   float contour_scale_left = 1, contour_scale_up = 1;
   int contour_sides = 0;
+  // cpfg's @Gt(start,end): the Hermite tangent coefficients of the next
+  // stretch of a cylinder (CPFG manual 6.7.3).
+  float cylinder_tangent_start = 1.2f, cylinder_tangent_end = 1.2f;
   int cylinder = -1;             // index of the open cylinder, -1: none
   std::uint32_t cylinder_serial = 0;  // tells a reused cylinder slot from the one this state knew
 
