@@ -63,6 +63,16 @@ bool answer_input_query(void* data, int query, int id, const double* in, double*
       out[2] = v.z;
       return true;
     }
+    case abi::kQueryCurveLength: {
+      if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
+      std::vector<Vec3> points = inputs.contours[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
+      const geometry::Contour& contour = inputs.contours[static_cast<std::size_t>(id - 1)];
+      double length = 0;
+      for (std::size_t k = 1; k < points.size(); ++k) length += geometry::length(points[k] - points[k - 1]);
+      if (contour.closed && points.size() > 1) length += geometry::length(points.front() - points.back());
+      out[0] = length;
+      return true;
+    }
     case abi::kQuerySurfacePatch: {
       if (id < 0 || id >= static_cast<int>(inputs.surfaces.size()) || inputs.surfaces[id].patches.empty())
         return false;

@@ -119,6 +119,9 @@ const std::map<std::string, Function>& functions() {
       {"nran", {"sylva_cpfg_nran", 2, 2}},   {"srand", {"sylva_cpfg_srand", 1, 1}},
       {"func", {"sylva_cpfg_func", 2, 2}},   {"pow", {"sylva_cpfg_pow", 2, 2}},
       {"bran", {"sylva_cpfg_bran", 2, 2}},   {"biran", {"sylva_cpfg_biran", 2, 2}},
+      {"fclose", {"sylva_cpfg_fclose", 1, 1}}, {"fflush", {"sylva_cpfg_fflush", 1, 1}},
+      {"curveX", {"sylva_cpfg_curveX", 2, 2}}, {"curveY", {"sylva_cpfg_curveY", 2, 2}},
+      {"curveZ", {"sylva_cpfg_curveZ", 2, 2}}, {"curveGAL", {"sylva_cpfg_curveGAL", 1, 1}},
   };
   return table;
 }
@@ -139,11 +142,61 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
     }
     return text + ")";
   }
+  if (name.text == "fopen") {
+    expect_op(c, "(");
+    Tok file = next_token(c);
+    if (file.kind != Tok::kString) expected(c, file, "a file name in quotes");
+    expect_op(c, ",");
+    Tok mode = next_token(c);
+    if (mode.kind != Tok::kString) expected(c, mode, "\"r\" or \"w\"");
+    expect_op(c, ")");
+    return "sylva_cpfg_fopen(" + file.text + ", " + mode.text + ")";
+  }
+  if (name.text == "fprintf" || name.text == "fscan" || name.text == "fscanf") {
+    // fprintf(file, "format", values...) and fscan(file, "format", &var, ...):
+    // every cpfg variable is a number, so formats hold %f and %g only.
+    const bool scan = name.text != "fprintf";
+    expect_op(c, "(");
+    std::string file = ternary(c, scope);
+    expect_op(c, ",");
+    Tok format = next_token(c);
+    if (format.kind != Tok::kString) expected(c, format, "a format string");
+    std::vector<std::string> values;
+    while (true) {
+      Tok t = next_token(c);
+      if (t.kind == Tok::kOp && t.text == ")") break;
+      if (t.kind != Tok::kOp || t.text != ",") expected(c, t, "',' or ')'");
+      if (!scan) {
+        values.push_back("(double)(" + ternary(c, scope) + ")");
+        continue;
+      }
+      expect_op(c, "&");
+      Tok var = next_token(c);
+      if (var.kind != Tok::kIdent) expected(c, var, "a variable to read into");
+      if (!scope.formals.count(var.text) && !scope.locals.count(var.text) && !scope.globals.count(var.text)) {
+        if (scope.control_block) scope.globals.insert(var.text);
+        else scope.locals.insert(var.text);
+      }
+      values.push_back(variable(var.text));
+    }
+    if (!scan) {
+      std::string text = "sylva_cpfg_fprintf((double)(" + file + "), " + format.text;
+      for (const std::string& v : values) text += ", " + v;
+      return text + ")";
+    }
+    // Read into floats (what %f and %g store), then copy into the variables.
+    const std::string n = std::to_string(values.size() ? values.size() : 1);
+    std::string text = "[&]() -> double { float sylva_in[" + n + "] = {}; double sylva_read = sylva_cpfg_fscan((double)(" +
+                       file + "), " + format.text;
+    for (std::size_t k = 0; k < values.size(); ++k) text += ", &sylva_in[" + std::to_string(k) + "]";
+    text += ");";
+    for (std::size_t k = 0; k < values.size(); ++k)
+      text += " if (sylva_read > " + std::to_string(k) + ") " + values[k] + " = sylva_in[" + std::to_string(k) + "];";
+    return text + " return sylva_read; }()";
+  }
   auto it = functions().find(name.text);
   if (it == functions().end()) {
-    static const std::set<std::string> later = {"fopen", "fclose", "fscan", "fscanf", "fprintf",
-                                                "fflush", "curveX", "curveY", "curveZ", "curveGAL", "inblob",
-                                                "stop", "vvXmin"};
+    static const std::set<std::string> later = {"inblob", "stop", "vvXmin"};
     if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
     c.fail_at(name.pos, "unknown function '" + name.text + "'");
   }
@@ -411,6 +464,49 @@ inline double sylva_cpfg_biran(double n, double p) {
   return static_cast<double>(hits);
 }
 inline double sylva_cpfg_func(double id, double x) { return func(static_cast<int>(id), static_cast<float>(x)); }
+inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast<int>(id), static_cast<float>(t)); }
+inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
+inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
+inline double sylva_cpfg_curveGAL(double id) { return curveLength(static_cast<int>(id)); }
+// Files opened by the model (fopen returns 1, 2, ...; 0 when it fails).
+inline ::std::FILE* sylva_cpfg_files[64];
+inline ::std::FILE* sylva_cpfg_file(double id) {
+  const long k = ::std::lround(id);
+  return k >= 1 && k <= 64 ? sylva_cpfg_files[k - 1] : nullptr;
+}
+inline double sylva_cpfg_fopen(const char* name, const char* mode) {
+  for (int k = 0; k < 64; ++k)
+    if (!sylva_cpfg_files[k]) {
+      sylva_cpfg_files[k] = ::std::fopen(name, mode[0] == 'w' ? "w" : mode[0] == 'a' ? "a" : "r");
+      if (sylva_cpfg_files[k]) return k + 1;
+      char text[300];
+      ::std::snprintf(text, sizeof text, "fopen: cannot open %s\n", name);
+      ::sylva::rt::message(text);
+      return 0;
+    }
+  ::sylva::rt::message("fopen: too many open files\n");
+  return 0;
+}
+inline double sylva_cpfg_fclose(double id) {
+  ::std::FILE* f = sylva_cpfg_file(id);
+  if (!f) return -1;
+  sylva_cpfg_files[::std::lround(id) - 1] = nullptr;
+  return ::std::fclose(f);
+}
+inline double sylva_cpfg_fflush(double id) {
+  ::std::FILE* f = sylva_cpfg_file(id);
+  return f ? ::std::fflush(f) : -1;
+}
+template <class... Values>
+double sylva_cpfg_fprintf(double id, const char* format, Values... values) {
+  ::std::FILE* f = sylva_cpfg_file(id);
+  return f ? ::std::fprintf(f, format, values...) : -1;
+}
+template <class... Targets>
+double sylva_cpfg_fscan(double id, const char* format, Targets... targets) {
+  ::std::FILE* f = sylva_cpfg_file(id);
+  return f ? ::std::fscanf(f, format, targets...) : -1;
+}
 template <int N>
 void sylva_cpfg_format(const unsigned char* params, ::sylva::abi::TextSink* out) {
   for (int k = 0; k < N; ++k) {

@@ -141,7 +141,7 @@ class CpfgParser {
     return t;
   }
 
-  // Names assigned in Start/End blocks are global (CPFG manual 4.1).
+  // Names assigned (or read by fscan) in Start/End blocks are global (CPFG manual 4.1).
   void collect_globals() {
     for (const Line& line : lines_) {
       Cursor c(line, model_.files);
@@ -156,7 +156,12 @@ class CpfgParser {
         while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
         std::size_t k = e;
         while (k < s.size() && s[k] == ' ') ++k;
-        if (k < s.size() && s[k] == '=' && (k + 1 >= s.size() || s[k + 1] != '=')) globals_.insert(s.substr(i, e - i));
+        std::size_t before = i;
+        while (before > 0 && s[before - 1] == ' ') --before;
+        // Assigned (name = ...) or read into by fscan (&name).
+        const bool assigned = k < s.size() && s[k] == '=' && (k + 1 >= s.size() || s[k + 1] != '=');
+        const bool scanned = before > 0 && s[before - 1] == '&' && (before < 2 || s[before - 2] != '&');
+        if (assigned || scanned) globals_.insert(s.substr(i, e - i));
         i = e;
       }
     }

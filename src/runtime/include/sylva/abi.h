@@ -111,6 +111,7 @@ enum InputQuery : int {
   kQueryCurvePoint,         // in: s                  out: x, y, z
   kQueryCurveNormal,        // in: s                  out: x, y, z
   kQuerySurfacePatch,       // in: -                  out: 48 numbers (16 control points)
+  kQueryCurveLength,        // in: -                  out: length
 };
 
 struct ModelDescriptor {

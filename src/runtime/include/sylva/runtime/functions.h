@@ -100,6 +100,11 @@ inline V2d curveXY(int id, float s) { return curveXYd(id, s); }
 inline V3f curveXYZf(int id, float s) { return V3f(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXYZ")); }
 inline V3d curveXYZd(int id, float s) { return sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXYZ"); }
 inline V3d curveXYZ(int id, float s) { return curveXYZd(id, s); }
+inline float curveLength(int id) {
+  double out[1] = {0};
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveLength, id, nullptr, out, "curveLength");
+  return static_cast<float>(out[0]);
+}
 inline V3f curveNormal(int id, float s) {
   return V3f(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurveNormal, "curveNormal"));
 }
