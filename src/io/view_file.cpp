@@ -584,18 +584,9 @@ turtle::TurtleSettings ViewFile::turtle_settings() const {
   settings.contour_sides = contour_sides;
   settings.corrected_rotation = corrected_rotation;
   settings.auto_normals = render.auto_normals;
-  auto convert = [](const TropismCommand& t) {
-    turtle::Tropism out;
-    out.direction = t.direction;
-    out.angle = t.angle;
-    out.intensity = t.intensity;
-    out.elasticity = t.elasticity;
-    out.step = t.step;
-    out.torque = t.torque;
-    return out;
-  };
-  for (const TropismCommand& t : tropisms) settings.tropisms.push_back(convert(t));
-  if (simple_tropism) settings.simple_tropism = convert(*simple_tropism);
+
+  settings.tropisms = tropisms;
+  if (simple_tropism) settings.simple_tropism = *simple_tropism;
   for (const SurfaceCommand& s : surfaces) settings.surface_ids.push_back(s.id);
   return settings;
 }

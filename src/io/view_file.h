@@ -64,15 +64,9 @@ struct ViewWindow {
   float left = 0, top = 0, width = 1, height = 1;
 };
 
-// tropism: and torque: (8.1.4), with every part the manual gives.
-struct TropismCommand {
-  geometry::Vec3 direction{0, -1, 0};  // T:
-  float angle = 0;                     // A:, degrees from T
-  float intensity = 1;                 // I:
-  float elasticity = 0;                // E:
-  float step = 0;                      // S:
-  bool torque = false;
-};
+// tropism: and torque: (8.1.4), with every part the manual gives: the
+// turtle's own Tropism.
+using TropismCommand = turtle::Tropism;
 
 // surface: (8.1.5); surfaces get ids from 0 in this order.
 struct SurfaceCommand {
