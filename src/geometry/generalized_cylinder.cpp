@@ -33,6 +33,16 @@ Vec3 HermiteSegment::derivative(float t) const {
   return p0 * (6 * t2 - 6 * t) + m0 * (3 * t2 - 4 * t + 1) + p1 * (-6 * t2 + 6 * t) + m1 * (3 * t2 - 2 * t);
 }
 
+Vec3 BSplineSegment::at(float t) const {
+  const float t2 = t * t, t3 = t2 * t, u = 1 - t;
+  return (q0 * (u * u * u) + q1 * (3 * t3 - 6 * t2 + 4) + q2 * (-3 * t3 + 3 * t2 + 3 * t + 1) + q3 * t3) / 6.0f;
+}
+
+Vec3 BSplineSegment::derivative(float t) const {
+  const float t2 = t * t, u = 1 - t;
+  return (q0 * (-3 * u * u) + q1 * (9 * t2 - 12 * t) + q2 * (-9 * t2 + 6 * t + 3) + q3 * (3 * t2)) / 6.0f;
+}
+
 float contour_orientation(const Vec3* contour, int sides) {
   float twice_area = 0;
   for (int i = 0; i < sides; ++i) {

@@ -33,6 +33,15 @@ struct HermiteSegment {
   Vec3 derivative(float t) const;  // dp/dt
 };
 
+// A uniform cubic B-spline segment with control points q0..q3:
+// p(t) = ((1-t)^3 q0 + (3t^3 - 6t^2 + 4) q1 + (-3t^3 + 3t^2 + 3t + 1) q2 + t^3 q3) / 6.
+// It starts at (q0 + 4 q1 + q2) / 6 and ends at (q1 + 4 q2 + q3) / 6.
+struct BSplineSegment {
+  Vec3 q0, q1, q2, q3;
+  Vec3 at(float t) const;
+  Vec3 derivative(float t) const;  // dp/dt
+};
+
 // Twice the signed area of a contour in its plane: positive when it runs
 // counter-clockwise.
 float contour_orientation(const Vec3* contour, int sides);

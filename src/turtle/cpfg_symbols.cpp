@@ -293,16 +293,28 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
 
     // With a parameter (the curve type), { } and . are cpfg's generalized
     // cylinder (CPFG manual 6.7.3); without, its polygon (6.5).
+    // {(type) defines no control point; one follows each F and f (4 strips)
+    // and each .(strips) where the turtle has moved; }(type) adds the last
+    // where it has moved.
     case O::PolygonOrCylinderStart:
-      if (n > 0) start_cylinder();
-      else start_polygon();
+      if (n > 0) {
+        const int type = int_param(p, 0);
+        if (type >= 1 && type <= 4) {
+          start_cylinder(type);
+        } else {
+          note(" (unknown cylinder type; 1 used)");
+          start_cylinder(1);
+        }
+      } else {
+        start_polygon();
+      }
       break;
     case O::PolygonOrCylinderEnd:
-      if (n > 0) end_cylinder();
+      if (n > 0) end_cylinder(4, std::max(1, int_param(p, 0)));
       else end_polygon();
       break;
     case O::VertexOrCylinderPoint:
-      if (n > 0) cylinder_point(strips);
+      if (n > 0) cylinder_dot(strips);
       else polygon_vertex();
       break;
 

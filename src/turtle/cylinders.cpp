@@ -79,7 +79,7 @@ TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point(in
   return p;
 }
 
-void TurtleInterpreter::Impl::start_cylinder() {
+void TurtleInterpreter::Impl::start_cylinder(int type) {
   // One cylinder at a time per branch: a new one in the same branch ends the
   // previous; one in a sub-branch leaves the parent's open.
   if (cylinder_open(state_)) {
@@ -93,13 +93,16 @@ void TurtleInterpreter::Impl::start_cylinder() {
   Cylinder& c = cylinders_[slot];
   c.points.clear();
   c.open = true;
+  c.type = type;
   c.serial = next_serial_++;
   const geometry::Contour& shape = contour(state_.contour);
   int sides = state_.contour_sides > 0 ? state_.contour_sides : shape.samples > 0 ? shape.samples : settings_.contour_sides;
   c.sides = std::max(3, sides);
-  c.points.push_back(control_point(1));
+  // {(type) "does not define the first control point" (CPFG manual 6.7.3).
+  if (type == 0) c.points.push_back(control_point(1));
   state_.cylinder = static_cast<int>(slot);
   state_.cylinder_serial = c.serial;
+  if (trace_ && type > 0) *trace_ += " type " + std::to_string(type);
   note_position(" at ", state_.position);
 }
 
@@ -114,13 +117,55 @@ void TurtleInterpreter::Impl::cylinder_point(int strips) {
   note_position(" at ", state_.position);
 }
 
-void TurtleInterpreter::Impl::end_cylinder(int strips) {
+namespace {
+
+// Whether the turtle is away from a cylinder's last control point (or the
+// cylinder has none yet).
+template <class Points>
+bool moved_since_last_point(const Points& points, Vec3 position) {
+  return points.empty() || length(position - points.back().position) >= kEpsilon;
+}
+
+constexpr int kStepStrips = 4;  // the strips of the points after F and f
+
+}  // namespace
+
+void TurtleInterpreter::Impl::cylinder_dot(int strips) {
   if (!cylinder_open(state_)) {
     note(" ignored: no generalized cylinder");
     return;
   }
   Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  c.points.push_back(control_point(strips));
+  if (c.type > 0 && !moved_since_last_point(c.points, state_.position)) {
+    // The point the last F or f made: .(strips) gives its stretch's strips.
+    c.points.back().strips = std::max(1, strips);
+    if (trace_) *trace_ += " strips of point " + std::to_string(c.points.size());
+    return;
+  }
+  cylinder_point(strips);
+}
+
+void TurtleInterpreter::Impl::cylinder_step_point() {
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
+  if (c.type == 0 || !moved_since_last_point(c.points, state_.position)) return;
+  c.points.push_back(control_point(kStepStrips));
+  if (trace_) *trace_ += " point " + std::to_string(c.points.size());
+}
+
+void TurtleInterpreter::Impl::end_cylinder(int strips, int type) {
+  if (!cylinder_open(state_)) {
+    note(" ignored: no generalized cylinder");
+    return;
+  }
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
+  if (c.type == 0) {
+    // @Gs ... @Ge(strips) or }(type), @Ge's equivalent: always a last point.
+    c.points.push_back(control_point(type > 0 ? 1 : strips));
+  } else {
+    if (type > 0 && type != c.type && trace_)
+      *trace_ += " (type " + std::to_string(type) + " does not match {(" + std::to_string(c.type) + "))";
+    if (moved_since_last_point(c.points, state_.position)) c.points.push_back(control_point(type > 0 ? kStepStrips : strips));
+  }
   close_cylinder(state_.cylinder);
   state_.cylinder = -1;
 }
@@ -128,13 +173,18 @@ void TurtleInterpreter::Impl::end_cylinder(int strips) {
 namespace {
 
 // The number of rings of a cylinder: one per control point and strips - 1
-// inside each stretch.
+// inside each stretch; a closed axis has a stretch back to the first point
+// (ending at its ring).
 template <class Points>
-std::size_t ring_count(const Points& points) {
-  std::size_t rings = points.empty() ? 0 : 1;
-  for (std::size_t k = 1; k < points.size(); ++k) rings += static_cast<std::size_t>(points[k].strips);
+std::size_t ring_count(const Points& points, bool loop) {
+  if (points.size() < 2) return points.size();
+  std::size_t rings = loop ? 0 : 1;
+  for (std::size_t k = loop ? 0 : 1; k < points.size(); ++k) rings += static_cast<std::size_t>(points[k].strips);
   return rings;
 }
+
+bool closed_axis(int type) { return type == 2 || type == 4; }
+bool bspline_axis(int type) { return type == 3 || type == 4; }
 
 // The right-handed angle around unit `axis` taking `from` to `to` (both
 // across the axis).
@@ -147,7 +197,7 @@ float angle_around(Vec3 axis, Vec3 from, Vec3 to) {
 void TurtleInterpreter::Impl::close_cylinder(int index) {
   Cylinder& c = cylinders_[static_cast<std::size_t>(index)];
   if (trace_)
-    *trace_ += " cylinder of " + std::to_string(ring_count(c.points)) + " rings x " + std::to_string(c.sides) +
+    *trace_ += " cylinder of " + std::to_string(ring_count(c.points, closed_axis(c.type))) + " rings x " + std::to_string(c.sides) +
                " sides";
   draw_cylinder(index);
   c.open = false;
@@ -158,6 +208,9 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
   if (!scene_ || c.points.size() < 2) return;
   const int sides = c.sides;
   const auto n_sides = static_cast<std::size_t>(sides);
+  const std::size_t n = c.points.size();
+  const bool loop = closed_axis(c.type);
+  const bool bspline = bspline_axis(c.type);
   const CylinderPoint& head = c.points.front();
   const bool closed = contour(head.contour).closed;
   // Bands face outward for a counter-clockwise contour; a clockwise one is
@@ -166,26 +219,66 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
       closed && geometry::contour_orientation(contour_points(head.contour, head.blend_contour, head.blend, sides),
                                               sides) < 0;
 
+  // The B-spline's control polygon: the control points, wrapped around a
+  // closed axis; an open one gets phantom points 2 p0 - p1 and
+  // 2 p(n-1) - p(n-2) beyond its ends, so that it starts and ends at them.
+  auto control = [&](long i) -> Vec3 {
+    const long count = static_cast<long>(n);
+    if (loop) return c.points[static_cast<std::size_t>(((i % count) + count) % count)].position;
+    if (i < 0) return c.points[0].position * 2.0f - c.points[1].position;
+    if (i >= count) return c.points[n - 1].position * 2.0f - c.points[n - 2].position;
+    return c.points[static_cast<std::size_t>(i)].position;
+  };
+  auto bspline_segment = [&](std::size_t k) {
+    const auto i = static_cast<long>(k);
+    return geometry::BSplineSegment{control(i - 1), control(i), control(i + 1), control(i + 2)};
+  };
+  // Where a control point's ring goes: at the point on a Hermite axis; on a
+  // B-spline, where the curve passes nearest it (its segment's start), its
+  // frame turned to the curve.
+  struct Anchor {
+    Vec3 position;
+    Frame frame;
+  };
+  auto anchor = [&](std::size_t k) {
+    const CylinderPoint& p = c.points[k];
+    Anchor a{p.position, p.frame};
+    if (bspline) {
+      const geometry::BSplineSegment s = bspline_segment(k);
+      a.position = s.at(0);
+      a.frame.set_heading(s.derivative(0), kEpsilon);
+      a.frame.orthonormalize();
+    }
+    return a;
+  };
+
   const auto first_vertex = static_cast<std::uint32_t>(scene_->positions.size());
-  auto control_ring = [&](const CylinderPoint& p) {
+  auto control_ring = [&](const CylinderPoint& p, const Anchor& at) {
     const float radius = p.width / 2;  // the width is the diameter, as for lines
-    geometry::place_ring(contour_points(p.contour, p.blend_contour, p.blend, sides), sides, p.position,
-                         p.frame.heading, p.frame.left, p.frame.up, radius * p.scale_left, radius * p.scale_up,
+    geometry::place_ring(contour_points(p.contour, p.blend_contour, p.blend, sides), sides, at.position,
+                         at.frame.heading, at.frame.left, at.frame.up, radius * p.scale_left, radius * p.scale_up,
                          scene_->positions);
   };
-  control_ring(head);
+  Anchor from = anchor(0);
+  control_ring(head, from);
   const auto first_index = static_cast<std::uint32_t>(scene_->indices.size());
-  for (std::size_t k = 0; k + 1 < c.points.size(); ++k) {
+  const std::size_t stretches = loop ? n : n - 1;
+  for (std::size_t k = 0; k < stretches; ++k) {
     const CylinderPoint& a = c.points[k];
-    const CylinderPoint& b = c.points[k + 1];
+    const bool back_to_head = k + 1 == n;  // a closed axis's last stretch
+    const CylinderPoint& b = c.points[back_to_head ? 0 : k + 1];
+    const Anchor to = anchor(back_to_head ? 0 : k + 1);
     const auto stretch_first = static_cast<std::uint32_t>(scene_->positions.size()) - static_cast<std::uint32_t>(sides);
-    const float distance = length(b.position - a.position);
-    // Rings inside the stretch: none when the control points coincide (the
-    // curve has no length to spread them along).
+    const float distance = length(to.position - from.position);
+    // Rings inside the stretch: none when the ends coincide (the curve has
+    // no length to spread them along).
     const int strips = distance < kEpsilon ? 1 : b.strips;
     if (strips > 1) {
-      const geometry::HermiteSegment curve{a.position, a.frame.heading * (distance * b.tangent_start), b.position,
-                                           b.frame.heading * (distance * b.tangent_end)};
+      const geometry::HermiteSegment hermite{a.position, a.frame.heading * (distance * b.tangent_start), b.position,
+                                             b.frame.heading * (distance * b.tangent_end)};
+      const geometry::BSplineSegment spline = bspline_segment(k);
+      auto curve_at = [&](float t) { return bspline ? spline.at(t) : hermite.at(t); };
+      auto curve_derivative = [&](float t) { return bspline ? spline.derivative(t) : hermite.derivative(t); };
       // The contours at both ends, kept: contour_points reuses its buffer.
       const Vec3* from_points = contour_points(a.contour, a.blend_contour, a.blend, sides);
       ring_from_.assign(from_points, from_points + sides);
@@ -195,18 +288,19 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
       // Parallel transport of the first frame along the curve, then the roll
       // left between it and the last frame, spread over the stretch.
       std::vector<Frame> frames(static_cast<std::size_t>(strips) + 1);
-      frames[0] = a.frame;
+      frames[0] = from.frame;
       for (int j = 1; j <= strips; ++j) {
         const float t = static_cast<float>(j) / static_cast<float>(strips);
         Frame f = frames[static_cast<std::size_t>(j) - 1];
-        Vec3 direction = j == strips ? b.frame.heading : curve.derivative(t);
-        if (length(direction) < kEpsilon * distance) direction = a.frame.heading * (1 - t) + b.frame.heading * t;
+        Vec3 direction = j == strips ? to.frame.heading : curve_derivative(t);
+        if (length(direction) < kEpsilon * distance)
+          direction = from.frame.heading * (1 - t) + to.frame.heading * t;
         f.set_heading(direction, kEpsilon);  // unchanged where the curve stops and the headings cancel
         f.orthonormalize();
         frames[static_cast<std::size_t>(j)] = f;
       }
       const Frame& carried = frames.back();
-      const float roll = angle_around(b.frame.heading, carried.up, b.frame.up);
+      const float roll = angle_around(to.frame.heading, carried.up, to.frame.up);
       const float radius_a = a.width / 2, radius_b = b.width / 2;
       for (int j = 1; j < strips; ++j) {
         const float t = static_cast<float>(j) / static_cast<float>(strips);
@@ -216,11 +310,13 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
         const float radius = radius_a * (1 - t) + radius_b * t;
         const float scale_left = a.scale_left * (1 - t) + b.scale_left * t;
         const float scale_up = a.scale_up * (1 - t) + b.scale_up * t;
-        geometry::place_ring(ring_between_.data(), sides, curve.at(t), f.heading, f.left, f.up, radius * scale_left,
+        geometry::place_ring(ring_between_.data(), sides, curve_at(t), f.heading, f.left, f.up, radius * scale_left,
                              radius * scale_up, scene_->positions);
       }
     }
-    control_ring(b);
+    // The stretch's last ring: the next control point's, or on a closed
+    // axis's last stretch the first ring again.
+    if (!back_to_head) control_ring(b, to);
     // A group per stretch between control points, made by the module that
     // ended the stretch, so that each stretch knows its own module.
     geometry::TriangleGroup g;
@@ -228,12 +324,14 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
     g.first_index = static_cast<std::uint32_t>(scene_->indices.size());
     for (int j = 0; j < strips; ++j) {
       const auto ring = stretch_first + static_cast<std::uint32_t>(j * sides);
-      geometry::join_rings(ring, ring + static_cast<std::uint32_t>(sides), sides, closed, reverse, scene_->indices);
+      const auto next = back_to_head && j + 1 == strips ? first_vertex : ring + static_cast<std::uint32_t>(sides);
+      geometry::join_rings(ring, next, sides, closed, reverse, scene_->indices);
     }
     g.index_count = static_cast<std::uint32_t>(scene_->indices.size()) - g.first_index;
     g.color = b.color;
     g.from = b.from;
     scene_->groups.push_back(g);
+    from = to;
   }
   geometry::set_normals_from_faces(*scene_, first_vertex,
                                    static_cast<std::uint32_t>(scene_->positions.size()) - first_vertex, first_index,

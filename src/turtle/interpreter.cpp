@@ -97,6 +97,7 @@ void TurtleInterpreter::Impl::forward(float distance, bool draw, bool polygon_ve
     note_position(" to ", end);
   }
   if (polygon_vertex_too && !polygons_.empty()) polygon_vertex();
+  if (polygon_vertex_too && cylinder_open(state_)) cylinder_step_point();
   if (draw && bending_) apply_tropisms();
 }
 

@@ -81,11 +81,21 @@ struct TurtleInterpreter::Impl {
   const Vec3* contour_points(int id, int blend_id, float blend, int sides);
   struct CylinderPoint;
   CylinderPoint control_point(int strips) const;
-  void start_cylinder();
+  // `type` 0: @Gs or StartGC, whose start is the first control point;
+  // 1..4: cpfg's {(type) (CPFG manual 6.7.3), which defines no point, adds
+  // one after each F and f, and whose type 2 and 4 close the axis and 3 and
+  // 4 make it a uniform cubic B-spline.
+  void start_cylinder(int type = 0);
   // `strips`: the bands between this control point and the previous one
   // (cpfg's @Gc(strips), .(strips), @Ge(strips)); L+C's are always 1.
   void cylinder_point(int strips = 1);
-  void end_cylinder(int strips = 1);
+  // cpfg's .(strips) in a {(type) cylinder: a point, or the strips of the
+  // last one when the turtle has not moved since.
+  void cylinder_dot(int strips);
+  // The point after an F or f in a {(type) cylinder (4 strips).
+  void cylinder_step_point();
+  // `type`: }(type)'s, checked against {(type)'s; 0 for @Ge and EndGC.
+  void end_cylinder(int strips = 1, int type = 0);
   bool cylinder_open(const TurtleState& s) const;
   void close_cylinder(int index);
   void draw_cylinder(int index);
@@ -140,6 +150,7 @@ struct TurtleInterpreter::Impl {
   struct Cylinder {
     std::vector<CylinderPoint> points;
     int sides = 8;
+    int type = 0;  // as start_cylinder's
     bool open = false;
     std::uint32_t serial = 0;
   };

@@ -152,5 +152,69 @@ TEST(CpfgCylinder, RingFramesRollSmoothly) {
                   1e-5);
 }
 
+// {(type) (CPFG manual 6.7.3) defines no point at the start; each F makes
+// one with 4 strips. {(1) F F F }(1): points at y = 1, 2, 3 (the start, y = 0,
+// is none; } adds none, the turtle has not moved since the last F); two
+// stretches of 4 strips: 1 + 4 + 4 = 9 rings of 4 sides, 2 groups of
+// 4 strips x 4 sides x 2 triangles.
+TEST(CpfgCylinder, BraceCylinderPointsAfterEachStep) {
+  Scene s = draw_cpfg_cylinder("brace-steps", "@!(4){(1) F F F }(1)");
+  ASSERT_EQ(s.positions.size(), 4u * 9);
+  ASSERT_EQ(s.groups.size(), 2u);
+  for (const auto& g : s.groups) EXPECT_EQ(g.index_count, 4u * 4 * 2 * 3);
+  expect_near(ring_center(s, 0, 4), {0, 1, 0});
+  expect_near(ring_center(s, 4, 4), {0, 2, 0});
+  expect_near(ring_center(s, 8, 4), {0, 3, 0});
+  // f makes points too; a G does not, so } adds the last: 1 + 4 rings.
+  Scene moves = draw_cpfg_cylinder("brace-moves", "@!(4){(1) f G }(1)");
+  EXPECT_EQ(moves.positions.size(), 4u * 5);
+  // .(2) after a move adds a point with 2 strips: F (y=1), G (y=2), .(2):
+  // 1 + 2 rings; } adds none.
+  Scene dot = draw_cpfg_cylinder("brace-dot", "@!(4){(1) F G .(2) }(2)");
+  EXPECT_EQ(dot.positions.size(), 4u * 3);
+}
+
+// {(2) F + F + F + F }(2) with 90 degrees: points (0,1,0), (-1,1,0),
+// (-1,0,0), (0,0,0); the closed axis adds a fourth stretch back to the
+// first: 4 stretches x 4 strips = 16 rings (the last stretch ends at the
+// first ring, no ring of its own), 4 groups; the last band's second ring is
+// ring 0's vertices.
+TEST(CpfgCylinder, ClosedHermiteSquare) {
+  Scene s = draw_cpfg_cylinder("closed-square", "@!(4){(2) F + F + F + F }(2)");
+  ASSERT_EQ(s.positions.size(), 4u * 16);
+  ASSERT_EQ(s.groups.size(), 4u);
+  for (const auto& g : s.groups) EXPECT_EQ(g.index_count, 4u * 4 * 2 * 3);
+  expect_near(ring_center(s, 0, 4), {0, 1, 0});
+  expect_near(ring_center(s, 12, 4), {0, 0, 0});
+  const auto& last = s.groups.back();
+  std::uint32_t lowest = ~0u, highest = 0;
+  for (std::uint32_t i = last.first_index; i < last.first_index + last.index_count; ++i) {
+    lowest = std::min(lowest, s.indices[i]);
+    highest = std::max(highest, s.indices[i]);
+  }
+  EXPECT_EQ(lowest, 0u);               // joins ring 0
+  EXPECT_EQ(highest, 4u * 16 - 1);     // and the last ring
+  // The open type 1 has no stretch back: 1 + 3 x 4 rings.
+  Scene open = draw_cpfg_cylinder("open-square", "@!(4){(1) F + F + F + F }(1)");
+  EXPECT_EQ(open.positions.size(), 4u * 13);
+}
+
+// {(3) F - F + F }(3): control points p0 = (0,1,0), p1 = (1,1,0),
+// p2 = (1,2,0); the open B-spline gets phantom points 2 p0 - p1 = (-1,1,0)
+// and 2 p2 - p1 = (1,3,0). Ring 0 is at p0: (-1 + 4 x 0 + 1, 1 + 4 + 1)/6.
+// The middle ring (ring 4, the knot between the segments) is at
+// (p0 + 4 p1 + p2) / 6 = (5/6, 7/6, 0), not at p1. Ring 2 (t = 1/2 of the
+// first segment, weights 1/48, 23/48, 23/48, 1/48 of (-1,1), (0,1), (1,1),
+// (1,2)) is at (23/48, 49/48, 0). Ring 8 is at p2.
+TEST(CpfgCylinder, BSplineAxis) {
+  Scene s = draw_cpfg_cylinder("bspline", "@!(4){(3) F - F + F }(3)");
+  ASSERT_EQ(s.positions.size(), 4u * 9);
+  ASSERT_EQ(s.groups.size(), 2u);
+  expect_near(ring_center(s, 0, 4), {0, 1, 0});
+  expect_near(ring_center(s, 2, 4), {23.0f / 48, 49.0f / 48, 0});
+  expect_near(ring_center(s, 4, 4), {5.0f / 6, 7.0f / 6, 0});
+  expect_near(ring_center(s, 8, 4), {1, 2, 0});
+}
+
 }  // namespace
 }  // namespace sylva::test::turtle_tests

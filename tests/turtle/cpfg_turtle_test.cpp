@@ -213,14 +213,26 @@ TEST(CpfgTurtle, CirclesAndSpheresTakeTheirDiameter) {
   EXPECT_FLOAT_EQ(s.spheres[1].radius, 3);
 }
 
+// @Gs F @Gc(2) F @Ge(3): three control points (the start, each @G), so two
+// stretches (a group each). {(1) F .(2) F }(1) (CPFG manual 6.7.3): { is no
+// point; the first F makes one (y = 1); .(2) finds the turtle there, so it
+// only sets that point's strips; the second F makes the second (y = 2, 4
+// strips); } finds the turtle there and adds none: two points, one stretch
+// of 4 strips, so 5 rings of 8 sides.
 TEST(CpfgTurtle, GeneralizedCylinders) {
   for (const char* axiom : {"@Gs F @Gc(2) F @Ge(3)", "{(1) F .(2) F }(1)"}) {
-    Scene s = draw_cpfg(std::string("cylinder-") + (axiom[0] == '@' ? "at" : "brace"), axiom);
-    // Three control points: a group per stretch between them.
-    ASSERT_EQ(s.groups.size(), 2u) << axiom;
+    const bool at = axiom[0] == '@';
+    Scene s = draw_cpfg(std::string("cylinder-") + (at ? "at" : "brace"), axiom);
+    ASSERT_EQ(s.groups.size(), at ? 2u : 1u) << axiom;
     for (const geometry::TriangleGroup& g : s.groups)
       EXPECT_EQ(g.kind, geometry::TriangleGroup::Kind::GeneralizedCylinder) << axiom;
     EXPECT_TRUE(s.segments.empty()) << axiom;  // the cylinder is the drawing
+    if (!at) {
+      ASSERT_FALSE(s.positions.empty());
+      EXPECT_EQ(s.positions.size() % 5, 0u) << "5 rings";
+      const std::size_t sides = s.positions.size() / 5;
+      EXPECT_EQ(s.groups[0].index_count, 4 * sides * 2 * 3);
+    }
   }
 }
 
