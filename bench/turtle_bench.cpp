@@ -56,7 +56,7 @@ void picture(benchmark::State& state) {
   output.width = 1920;
   output.height = 1080;
   const std::string path = std::string(SYLVA_BENCH_CACHE_DIR) + "/plant_1m.png";
-  for (auto _ : state) sylva::write_output(path, *simulation, output);
+  for (auto _ : state) sylva::write_output(path, simulation->scene(), *simulation, output);
   state.counters["peak_RSS_MB"] = peak_rss_mb();
 }
 

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +39,15 @@ ProcessResult run_sylva(const std::vector<std::string>& args, const std::string&
                                    std::string("SYLVA_CACHE_DIR=") + SYLVA_TEST_CACHE_DIR, SYLVA_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
   return run_process(argv);
+}
+
+std::vector<fs::path> model_folders(const std::string& dir) {
+  std::vector<fs::path> folders;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_directory() && fs::exists(entry.path() / "lsystem.l")) folders.push_back(entry.path());
+  std::sort(folders.begin(), folders.end());
+  return folders;
 }
 
 std::string make_temp_dir(const std::string& name) {

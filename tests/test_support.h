@@ -2,6 +2,7 @@
 // sylva program, and reading test data.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ std::string derive_string(const std::string& model, int steps = -1);
 
 // Runs the sylva program with `args` in `working_dir` (the tests' cache is set).
 ProcessResult run_sylva(const std::vector<std::string>& args, const std::string& working_dir = ".");
+
+// The folders directly under `dir` that hold a model (lsystem.l), sorted.
+std::vector<std::filesystem::path> model_folders(const std::string& dir);
 
 // A fresh empty directory under the system's temporary directory.
 std::string make_temp_dir(const std::string& name);

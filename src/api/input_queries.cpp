@@ -14,8 +14,7 @@ using geometry::Vec3;
 // between them stays within a fraction of a percent of the curve.
 constexpr int kCurveSamples = 512;
 
-Vec3 curve_point(const geometry::Contour& contour, double s, Vec3* tangent) {
-  std::vector<Vec3> points = contour.resample(kCurveSamples);
+Vec3 curve_point(const geometry::Contour& contour, const std::vector<Vec3>& points, double s, Vec3* tangent) {
   if (points.empty()) return {};
   const int segments = contour.closed ? kCurveSamples : kCurveSamples - 1;
   double t = std::clamp(s, 0.0, 1.0) * segments;
@@ -29,8 +28,18 @@ Vec3 curve_point(const geometry::Contour& contour, double s, Vec3* tangent) {
 
 }  // namespace
 
-bool answer_input_query(void* data, int query, int id, const double* in, double* out) {
-  const auto& inputs = *static_cast<const io::InputFiles*>(data);
+bool answer_input_query(void* answers, int query, int id, const double* in, double* out) {
+  return static_cast<InputAnswers*>(answers)->answer(query, id, in, out);
+}
+
+const std::vector<Vec3>& InputAnswers::curve(int id) {
+  std::vector<Vec3>& samples = curves_[static_cast<std::size_t>(id - 1)];
+  if (samples.empty()) samples = files_.contours[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
+  return samples;
+}
+
+bool InputAnswers::answer(int query, int id, const double* in, double* out) {
+  const io::InputFiles& inputs = files_;
   switch (query) {
     case abi::kQueryFunction:
     case abi::kQueryFunctionTangent: {
@@ -55,7 +64,7 @@ bool answer_input_query(void* data, int query, int id, const double* in, double*
     case abi::kQueryCurveNormal: {
       if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
       Vec3 tangent;
-      Vec3 p = curve_point(inputs.contours[static_cast<std::size_t>(id - 1)], in[0], &tangent);
+      Vec3 p = curve_point(inputs.contours[static_cast<std::size_t>(id - 1)], curve(id), in[0], &tangent);
       // The normal lies in the curve's plane, to the right of the direction of travel.
       Vec3 v = query == abi::kQueryCurvePoint ? p : Vec3{tangent.y, -tangent.x, 0};
       out[0] = v.x;
@@ -65,7 +74,7 @@ bool answer_input_query(void* data, int query, int id, const double* in, double*
     }
     case abi::kQueryCurveLength: {
       if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
-      std::vector<Vec3> points = inputs.contours[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
+      const std::vector<Vec3>& points = curve(id);
       const geometry::Contour& contour = inputs.contours[static_cast<std::size_t>(id - 1)];
       double length = 0;
       for (std::size_t k = 1; k < points.size(); ++k) length += geometry::length(points[k] - points[k - 1]);

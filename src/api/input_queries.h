@@ -6,8 +6,23 @@
 
 namespace sylva {
 
-// The ControlState::input_query callback; `inputs` is an io::InputFiles.
-bool answer_input_query(void* inputs, int query, int id, const double* in, double* out);
+// What a model asks of its input files, with each curve sampled once (models
+// call curveX and the like per module, every step).
+class InputAnswers {
+ public:
+  explicit InputAnswers(const io::InputFiles& files) : files_(files), curves_(files.contours.size()) {}
+  bool answer(int query, int id, const double* in, double* out);
+
+ private:
+  // Contour id (from 1) sampled evenly by arc length; empty if no such id.
+  const std::vector<geometry::Vec3>& curve(int id);
+
+  const io::InputFiles& files_;
+  std::vector<std::vector<geometry::Vec3>> curves_;
+};
+
+// The ControlState::input_query callback; `answers` is an InputAnswers.
+bool answer_input_query(void* answers, int query, int id, const double* in, double* out);
 
 // "-D name=id" for every function of the input files, as lpfg defines them
 // (ids from 1 in command-line order), so models can write func(name, x).

@@ -27,29 +27,24 @@ Format format_of(const std::string& path) {
   return Format::Unknown;
 }
 
-const io::ViewFile* view_file(const Simulation& s) { return s.inputs().view ? &*s.inputs().view : nullptr; }
-
-geometry::ViewParameters view_parameters(const Simulation& s) {
-  const io::ViewFile* v = view_file(s);
-  return v ? v->view(0) : geometry::ViewParameters{};
+// The view file, or lpfg's defaults when the model has none.
+const io::ViewFile& view_or_default(const Simulation& s) {
+  static const io::ViewFile defaults;
+  return s.inputs().view ? *s.inputs().view : defaults;
 }
 
-io::ImageSettings image_settings(const Simulation& s) {
+io::ImageSettings image_settings(const io::ViewFile& view) {
   io::ImageSettings settings;
-  if (const io::ViewFile* v = view_file(s)) {
-    settings.render = v->render;
-    settings.lights = v->lights_or_default();
-    settings.contour_sides = v->contour_sides;
-  } else {
-    settings.lights = io::ViewFile{}.lights_or_default();
-  }
+  settings.render = view.render;
+  settings.lights = view.lights_or_default();
+  settings.contour_sides = view.contour_sides;
   return settings;
 }
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(s), options.width,
-                                       options.height));
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s)),
+                                       options.width, options.height));
 }
 
 }  // namespace
@@ -60,32 +55,30 @@ void check_output_path(const std::string& path) {
                      "unknown output format (expected .obj, .ply, .glb, .svg, .pdf, .ps, .eps or .png)");
 }
 
-void write_output(const std::string& path, Simulation& simulation, const OutputOptions& options) {
+void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
+                  const OutputOptions& options) {
   check_output_path(path);
-  const geometry::Scene scene = simulation.scene();
-  const io::ViewFile* view = view_file(simulation);
-  const geometry::LineStyle line_style = view ? view->render.line_style : geometry::LineStyle::Pixel;
+  const io::ViewFile& view = view_or_default(simulation);
+  const geometry::Palette& palette = simulation.inputs().palette;
   switch (format_of(path)) {
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
-      geometry::TessellationOptions tess;
-      tess.line_style = line_style;
-      tess.contour_sides = view ? view->contour_sides : 16;
-      geometry::TriangleMesh mesh = geometry::tessellate(scene, tess);
+      geometry::TriangleMesh mesh = geometry::tessellate(scene, view.tessellation_options());
       const Format f = format_of(path);
-      if (f == Format::Obj) io::write_obj(path, mesh, simulation.inputs().palette, simulation.types());
-      else if (f == Format::Ply) io::write_ply(path, mesh, simulation.inputs().palette, simulation.types());
-      else io::write_glb(path, mesh, simulation.inputs().palette, simulation.types());
+      if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
+      else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
+      else io::write_glb(path, mesh, palette, simulation.types());
       break;
     }
     case Format::Vector:
-      io::write_vector_drawing(path, scene, simulation.inputs().palette, view_parameters(simulation), line_style,
-                               options.width, options.height, &simulation.types(),
-                               view ? view->render.ps_linecap : 1);
+      // Round caps join segments without notches; a view file may ask for lpfg's butt caps.
+      io::write_vector_drawing(path, scene, palette, view.view(0), view.render.line_style, options.width,
+                               options.height, &simulation.types(),
+                               simulation.inputs().view ? view.render.ps_linecap : 1);
       break;
     case Format::Png:
-      write_image(path, scene, simulation, view_parameters(simulation), options);
+      write_image(path, scene, simulation, view.view(0), options);
       break;
     case Format::Unknown:
       break;
@@ -103,7 +96,7 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
   std::vector<int> frames = animation.frames(length);
   if (frames.empty()) return 0;
 
-  geometry::ViewParameters view = view_parameters(simulation);
+  geometry::ViewParameters view = view_or_default(simulation).view(0);
   if (!view.box && !animation.scale_between_frames && !animation.new_view_between_frames) {
     // A first pass finds where the plant ends up, so the camera stays still.
     d.begin();

@@ -17,8 +17,10 @@ struct OutputOptions {
 // Throws ModelError naming `path` if its extension is not an output format.
 void check_output_path(const std::string& path);
 
-// Writes the simulation's current string, drawn by the turtle, to `path`.
-void write_output(const std::string& path, Simulation& simulation, const OutputOptions& options);
+// Writes `scene` (the simulation's current string drawn by the turtle, from
+// Simulation::scene(), computed once for all outputs) to `path`.
+void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
+                  const OutputOptions& options);
 
 // Runs the derivation again from the axiom and writes one PNG per frame of
 // the animation file (every step when there is none) into `dir` as

@@ -24,7 +24,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);
 
   abi::ControlState& control = *library_->descriptor().control;
-  control.inputs = inputs_.get();
+  answers_ = std::make_unique<InputAnswers>(*inputs_);
+  control.inputs = answers_.get();
   control.input_query = &answer_input_query;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
   if (derivation_->types().cpfg()) {

@@ -17,6 +17,8 @@
 
 namespace sylva {
 
+class InputAnswers;
+
 struct SimulationOptions {
   build::BuildOptions build;
   // View, animation, colormap, material, contour and function files, in the
@@ -45,6 +47,7 @@ class Simulation {
 
  private:
   std::unique_ptr<io::InputFiles> inputs_;
+  std::unique_ptr<InputAnswers> answers_;
   turtle::TurtleSettings turtle_settings_;
   std::unique_ptr<build::ModelLibrary> library_;
   std::unique_ptr<derive::Derivation> derivation_;

@@ -47,19 +47,24 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   sylva::SimulationOptions options{o.build, r.inputs};
   sylva::Simulation simulation(r.model, options);
   sylva::derive::Derivation& d = simulation.derivation();
+  bool derived = false;
   if (!r.frames_dir.empty()) {
     int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
     if (o.build.verbose) std::fprintf(stderr, "sylva: wrote %d frames to %s\n", frames, r.frames_dir.c_str());
+    // Frames that ended on the final step leave the final string in place.
+    const int steps = r.steps >= 0 ? r.steps : d.derivation_length();
+    derived = d.steps_done() == steps || d.stop_requested();
   }
-  d.run(r.steps);
+  if (!derived) d.run(r.steps);
   if (!r.interpreted_path.empty())
     sylva::io::write_output_file(r.interpreted_path, sylva::io::format_string(d.interpreted(), d.types()));
-  if (!r.turtle_path.empty()) {
+  if (!r.turtle_path.empty() || !r.outputs.empty()) {
+    // One interpretation serves the turtle's trace and every output file.
     std::string trace;
-    simulation.scene(&trace);
-    sylva::io::write_output_file(r.turtle_path, trace);
+    const sylva::geometry::Scene scene = simulation.scene(r.turtle_path.empty() ? nullptr : &trace);
+    if (!r.turtle_path.empty()) sylva::io::write_output_file(r.turtle_path, trace);
+    for (const std::string& path : r.outputs) sylva::write_output(path, scene, simulation, r.output);
   }
-  for (const std::string& path : r.outputs) sylva::write_output(path, simulation, r.output);
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
                             !r.frames_dir.empty();
   if (!r.string_path.empty() || !other_output)

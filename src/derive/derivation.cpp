@@ -178,16 +178,18 @@ void Derivation::run(int steps) {
 }
 
 ModuleString Derivation::interpreted() {
-  ModuleString out;
-  if (!rules_.has_rules(RuleKind::Interpretation)) {
-    out.assign(string_.data(), string_.size_bytes());
-    return out;
-  }
-  depth_warnings_.clear();
-  int depth = model_.interpretation_depth ? model_.interpretation_depth() : 1;
-  reset_lsystems();
-  expand(RuleKind::Interpretation, current_view(), 0, depth, out);
-  return out;
+  // The same walk the turtle gets, collected into a string.
+  struct Collector : InterpretedModuleVisitor {
+    const ModuleTypes& types;
+    ModuleString out;
+    explicit Collector(const ModuleTypes& t) : types(t) {}
+    void visit(ModuleId id, unsigned char* params, std::uint32_t, bool) override {
+      out.append_module(id, params, types[id].param_size);
+    }
+  } collector(types_);
+  collector.out.reserve(string_.size_bytes());
+  interpret(collector);
+  return std::move(collector.out);
 }
 
 void Derivation::interpret(InterpretedModuleVisitor& visitor) {

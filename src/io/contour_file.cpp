@@ -56,11 +56,7 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
     Word key_word = in.next("a key");
     if (key == "name:") {
       contour.name = in.rest_of_line("the contour's name");
-    } else if (key == "background:") {
-      in.rest_of_line("the background image");
-    } else if (key == "backgroundxy:") {
-      in.number("the background's x offset");
-      in.number("the background's y offset");
+    } else if (skip_editor_background(in, key)) {
     } else if (key == "points:") {
       if (count >= 0) in.fail(key_word, "the points are given twice");
       Word count_word = in.peek();

@@ -36,11 +36,7 @@ geometry::Function read_funcedit(WordReader& in, const std::string& default_name
     } else if (key == "range:") {
       in.number("the start of the range");
       in.number("the end of the range");
-    } else if (key == "background:") {
-      in.rest_of_line("the background image");
-    } else if (key == "backgroundxy:") {
-      in.number("the background's x offset");
-      in.number("the background's y offset");
+    } else if (skip_editor_background(in, key)) {
     } else if (key == "points:") {
       if (have_points) in.fail(key_word, "the points are given twice");
       have_points = true;

@@ -95,6 +95,20 @@ struct Command {
 // std::nullopt for a blank line; a command without a colon has only a name.
 std::optional<Command> split_command(std::string_view line, int line_number);
 
+// The editors' background image keys ("background:", "backgroundXY:"),
+// which say nothing about the curve: read past them. False for other keys.
+inline bool skip_editor_background(WordReader& in, const std::string& key) {
+  if (key == "background:") {
+    in.rest_of_line("the background image");
+  } else if (key == "backgroundxy:") {
+    in.number("the background's x offset");
+    in.number("the background's y offset");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // A gallery file of the tools (.cset, .fset): "<kind>galleryver M m",
 // "items: N", then N items, each read by read_item(in, default_name).
 template <class Item, class ReadItem>

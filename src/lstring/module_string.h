@@ -51,7 +51,6 @@ class ModuleString {
   const unsigned char* data() const { return buffer_.data; }
   std::size_t size_bytes() const { return buffer_.size; }
   bool empty() const { return buffer_.size == 0; }
-  std::size_t capacity_bytes() const { return buffer_.capacity; }
 
   // Where compiled models append modules.
   abi::ModuleBuffer* buffer() { return &buffer_; }

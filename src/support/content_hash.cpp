@@ -41,10 +41,4 @@ std::string ContentHash::hex() const {
   return text;
 }
 
-std::string hash_hex(std::string_view bytes) {
-  ContentHash h;
-  h.add(bytes);
-  return h.hex();
-}
-
 }  // namespace sylva

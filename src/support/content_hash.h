@@ -20,6 +20,5 @@ class ContentHash {
   std::uint64_t length_ = 0;
 };
 
-std::string hash_hex(std::string_view bytes);
 
 }  // namespace sylva

@@ -65,6 +65,9 @@ struct TurtleInterpreter::Impl {
   void end_polygon();
   void draw_polygon(std::size_t first);
   void flat_shape(geometry::TriangleGroup::Kind kind, const Vec3* corners, int count);
+  // Throws a ModelError naming the module unless 0 <= id < count (surfaces, meshes of the view file).
+  void require_view_file_id(const char* module, const char* kind, const char* kinds, int id,
+                            std::size_t count) const;
   void surface(int id, Vec3 scale, const char* module);
   void mesh(int id, Vec3 scale, const char* module);
   void dynamic_surface(const unsigned char* params);

@@ -171,13 +171,17 @@ geometry::Placement TurtleInterpreter::Impl::placement(Vec3 local_heading, Vec3 
   return p;
 }
 
+void TurtleInterpreter::Impl::require_view_file_id(const char* module, const char* kind, const char* kinds, int id,
+                                                   std::size_t count) const {
+  if (id >= 0 && static_cast<std::size_t>(id) < count) return;
+  throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...)" + where() + ": there is no " + kind + " " +
+                   std::to_string(id) +
+                   (count ? " (the view file gives " + std::string(kinds) + " 0 to " + std::to_string(count - 1) + ")"
+                          : " (no view file gives " + std::string(kinds) + ")"));
+}
+
 void TurtleInterpreter::Impl::surface(int id, Vec3 scale, const char* module) {
-  const std::size_t count = settings_.surfaces ? settings_.surfaces->size() : 0;
-  if (id < 0 || static_cast<std::size_t>(id) >= count)
-    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...)" + where() + ": there is no surface " +
-                     std::to_string(id) +
-                     (count ? " (the view file gives surfaces 0 to " + std::to_string(count - 1) + ")"
-                            : " (no view file gives surfaces)"));
+  require_view_file_id(module, "surface", "surfaces", id, settings_.surfaces ? settings_.surfaces->size() : 0);
   const geometry::BezierSurface& s = (*settings_.surfaces)[static_cast<std::size_t>(id)];
   if (trace_) *trace_ += " \"" + s.name + "\"";
   note_position(" at ", state_.position);
@@ -192,12 +196,7 @@ void TurtleInterpreter::Impl::surface(int id, Vec3 scale, const char* module) {
 }
 
 void TurtleInterpreter::Impl::mesh(int id, Vec3 scale, const char* module) {
-  const std::size_t count = settings_.meshes ? settings_.meshes->size() : 0;
-  if (id < 0 || static_cast<std::size_t>(id) >= count)
-    throw ModelError(std::string(module) + "(" + std::to_string(id) + ", ...)" + where() + ": there is no mesh " +
-                     std::to_string(id) +
-                     (count ? " (the view file gives meshes 0 to " + std::to_string(count - 1) + ")"
-                            : " (no view file gives meshes)"));
+  require_view_file_id(module, "mesh", "meshes", id, settings_.meshes ? settings_.meshes->size() : 0);
   const geometry::PredefinedMesh& m = (*settings_.meshes)[static_cast<std::size_t>(id)];
   if (trace_) *trace_ += " \"" + m.name + "\"";
   note_position(" at ", state_.position);

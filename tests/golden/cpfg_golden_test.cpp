@@ -41,11 +41,7 @@ std::string cpfg_dir() { return data_path("golden-cpfg"); }
 std::vector<CpfgCase> find_cases() {
   std::vector<CpfgCase> cases;
   const std::regex re(R"(expected-(homo-)?step(\d+)\.txt)");
-  std::vector<fs::path> folders;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(cpfg_dir(), ec))
-    if (entry.is_directory() && fs::exists(entry.path() / "lsystem.l")) folders.push_back(entry.path());
-  std::sort(folders.begin(), folders.end());
+  const std::vector<fs::path> folders = model_folders(cpfg_dir());
   for (const fs::path& folder : folders) {
     std::vector<CpfgCase> found;
     for (const auto& entry : fs::directory_iterator(folder)) {

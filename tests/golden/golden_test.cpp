@@ -43,11 +43,7 @@ std::string golden_dir() { return data_path("golden"); }
 std::vector<GoldenCase> find_cases() {
   std::vector<GoldenCase> cases;
   const std::regex expected_re(R"(expected-step(\d+)\.(.+))");
-  std::vector<fs::path> folders;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(golden_dir(), ec))
-    if (entry.is_directory() && fs::exists(entry.path() / "lsystem.l")) folders.push_back(entry.path());
-  std::sort(folders.begin(), folders.end());
+  const std::vector<fs::path> folders = model_folders(golden_dir());
 
   for (const fs::path& folder : folders) {
     std::vector<GoldenCase> found;
