@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/contour_edit.h"
 #include "sylva/abi.h"
 
 namespace sylva {
@@ -38,9 +39,48 @@ const std::vector<Vec3>& InputAnswers::curve(int id) {
   return samples;
 }
 
+void InputAnswers::restore_curves() {
+  if (original_contours_.empty()) return;
+  files_.contours = original_contours_;
+  for (auto& samples : curves_) samples.clear();
+}
+
+bool InputAnswers::change_curve(int query, int id, const double* in) {
+  if (id < 1 || id > static_cast<int>(files_.contours.size())) return false;
+  if (original_contours_.empty()) original_contours_ = files_.contours;
+  const auto k = static_cast<std::size_t>(id - 1);
+  geometry::Contour& contour = files_.contours[k];
+  switch (query) {
+    case abi::kQueryCurveScale:
+      geometry::scale_contour(contour, Vec3{static_cast<float>(in[0]), static_cast<float>(in[1]), static_cast<float>(in[2])});
+      break;
+    case abi::kQueryCurveSetPoint:
+      // The curve functions keep their samples until curveRecalculate.
+      return geometry::set_contour_point(
+          contour, static_cast<int>(in[0]),
+          Vec3{static_cast<float>(in[1]), static_cast<float>(in[2]), static_cast<float>(in[3])});
+    case abi::kQueryCurveReset:
+      contour = original_contours_[k];
+      break;
+    default:  // kQueryCurveRecalculate
+      break;
+  }
+  curves_[k].clear();
+  return true;
+}
+
 bool InputAnswers::answer(int query, int id, const double* in, double* out) {
   const io::InputFiles& inputs = files_;
   switch (query) {
+    case abi::kQueryCurveScale:
+    case abi::kQueryCurveSetPoint:
+    case abi::kQueryCurveRecalculate:
+    case abi::kQueryCurveReset:
+      return change_curve(query, id, in);
+    case abi::kQueryParameter:
+      if (id < 1 || id > static_cast<int>(inputs.parameters.size())) return false;
+      out[0] = inputs.parameters[static_cast<std::size_t>(id - 1)].value;
+      return true;
     case abi::kQueryFunction:
     case abi::kQueryFunctionTangent: {
       if (id < 1 || id > static_cast<int>(inputs.functions.size())) return false;
@@ -102,6 +142,13 @@ std::vector<std::string> function_name_defines(const io::InputFiles& inputs) {
   std::vector<std::string> defines;
   for (std::size_t k = 0; k < inputs.functions.size(); ++k)
     if (!inputs.functions[k].name.empty()) defines.push_back(inputs.functions[k].name + "=" + std::to_string(k + 1));
+  return defines;
+}
+
+std::vector<std::string> parameter_name_defines(const io::InputFiles& inputs) {
+  std::vector<std::string> defines;
+  for (std::size_t k = 0; k < inputs.parameters.size(); ++k)
+    defines.push_back(inputs.parameters[k].name + "=" + std::to_string(k + 1));
   return defines;
 }
 

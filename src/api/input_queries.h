@@ -7,18 +7,25 @@
 namespace sylva {
 
 // What a model asks of its input files, with each curve sampled once (models
-// call curveX and the like per module, every step).
+// call curveX and the like per module, every step). curveScale, curveSetPoint
+// and curveReset change the contours in `files` themselves, so the turtle
+// draws the changed ones.
 class InputAnswers {
  public:
-  explicit InputAnswers(const io::InputFiles& files) : files_(files), curves_(files.contours.size()) {}
+  explicit InputAnswers(io::InputFiles& files) : files_(files), curves_(files.contours.size()) {}
   bool answer(int query, int id, const double* in, double* out);
+  // Every contour back as read (a new run).
+  void restore_curves();
 
  private:
   // Contour id (from 1) sampled evenly by arc length; empty if no such id.
   const std::vector<geometry::Vec3>& curve(int id);
+  bool change_curve(int query, int id, const double* in);
 
-  const io::InputFiles& files_;
+  io::InputFiles& files_;
   std::vector<std::vector<geometry::Vec3>> curves_;
+  // The contours as read, kept from the first change on for curveReset.
+  std::vector<geometry::Contour> original_contours_;
 };
 
 // The ControlState::input_query callback; `answers` is an InputAnswers.
@@ -27,5 +34,8 @@ bool answer_input_query(void* answers, int query, int id, const double* in, doub
 // "-D name=id" for every function of the input files, as lpfg defines them
 // (ids from 1 in command-line order), so models can write func(name, x).
 std::vector<std::string> function_name_defines(const io::InputFiles& inputs);
+// "-D name=id" for every parameter of the .vset files (ids from 1), so models
+// can write val(name).
+std::vector<std::string> parameter_name_defines(const io::InputFiles& inputs);
 
 }  // namespace sylva

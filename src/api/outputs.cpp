@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
+#include "geometry/back_sides.h"
 #include "geometry/tessellation.h"
 #include "io/mesh_writers.h"
 #include "io/png_renderer.h"
@@ -56,7 +58,7 @@ void check_output_path(const std::string& path) {
 }
 
 void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
-                  const OutputOptions& options) {
+                  const OutputOptions& options, int view_id) {
   check_output_path(path);
   const io::ViewFile& view = view_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
@@ -65,6 +67,7 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
     case Format::Ply:
     case Format::Glb: {
       geometry::TriangleMesh mesh = geometry::tessellate(scene, view.tessellation_options());
+      geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
       const Format f = format_of(path);
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
@@ -73,12 +76,12 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
     }
     case Format::Vector:
       // Round caps join segments without notches; a view file may ask for lpfg's butt caps.
-      io::write_vector_drawing(path, scene, palette, view.view(0), view.render.line_style, options.width,
+      io::write_vector_drawing(path, scene, palette, view.view(view_id), view.render.line_style, options.width,
                                options.height, &simulation.types(),
                                simulation.inputs().view ? view.render.ps_linecap : 1);
       break;
     case Format::Png:
-      write_image(path, scene, simulation, view.view(0), options);
+      write_image(path, scene, simulation, view.view(view_id), options);
       break;
     case Format::Unknown:
       break;
@@ -96,29 +99,47 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
   std::vector<int> frames = animation.frames(length);
   if (frames.empty()) return 0;
 
-  geometry::ViewParameters view = view_or_default(simulation).view(0);
-  if (!view.box && !animation.scale_between_frames && !animation.new_view_between_frames) {
+  const std::set<int> listed(frames.begin(), frames.end());
+  const bool on_request = animation.display_on_request;
+  // Which view is drawn is known once Start has run (UseView).
+  geometry::ViewParameters view;
+  auto choose_view = [&] { view = view_or_default(simulation).view(simulation.primary_view()); };
+  if (!animation.scale_between_frames && !animation.new_view_between_frames) {
     // A first pass finds where the plant ends up, so the camera stays still.
     d.begin();
-    for (int k = 0; k < frames.back() && !d.stop_requested(); ++k) d.step();
-    geometry::Box bounds = simulation.scene().bounds();
-    if (!bounds.empty()) view.box = bounds;
+    choose_view();
+    if (!view.box) {
+      for (int k = 0; k < frames.back() && !d.stop_requested(); ++k) d.step();
+      geometry::Box bounds = simulation.scene().bounds();
+      if (!bounds.empty()) view.box = bounds;
+    }
     d.finish();
   }
+  const geometry::ViewParameters camera = view;
 
   int written = 0;
   d.begin();
+  if (animation.scale_between_frames || animation.new_view_between_frames) choose_view();
+  else view = camera;
+  // The frame of step `done`: a listed one, or on request the first, the
+  // last and those the model asked for with DisplayFrame().
+  auto frame_wanted = [&](int done) {
+    const bool asked = simulation.take_display_request();
+    if (on_request) return done == frames.front() || done == frames.back() || (asked && done >= frames.front());
+    return listed.count(done) > 0;
+  };
   int done = 0;
-  for (int frame : frames) {
-    while (done < frame && !d.stop_requested()) {
-      d.step();
-      ++done;
+  while (true) {
+    const bool last = done >= frames.back() || d.stop_requested();
+    if (frame_wanted(done) || (last && d.stop_requested())) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame-%04d.png", done);
+      write_image((std::filesystem::path(dir) / name).string(), simulation.scene(), simulation, view, options);
+      ++written;
     }
-    char name[32];
-    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
-    write_image((std::filesystem::path(dir) / name).string(), simulation.scene(), simulation, view, options);
-    ++written;
-    if (d.stop_requested()) break;
+    if (last) break;
+    d.step();
+    ++done;
   }
   d.finish();
   return written;

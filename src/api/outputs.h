@@ -18,15 +18,18 @@ struct OutputOptions {
 void check_output_path(const std::string& path);
 
 // Writes `scene` (the simulation's current string drawn by the turtle, from
-// Simulation::scene(), computed once for all outputs) to `path`.
+// Simulation::scene(), computed once for all outputs) to `path`, seen by the
+// camera of view `view` of the view file.
 void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
-                  const OutputOptions& options);
+                  const OutputOptions& options, int view = 0);
 
 // Runs the derivation again from the axiom and writes one PNG per frame of
 // the animation file (every step when there is none) into `dir` as
 // frame-NNNN.png, N being the step. The camera frames the last frame's
 // bounds unless the animation file asks to rescale between frames or the view
-// file gives a box. Returns the number of frames written.
+// file gives a box. With "display on request: on" the frames are the first,
+// the last and the steps in which the model called DisplayFrame(). Frames
+// show the simulation's primary view. Returns the number of frames written.
 int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps = -1);
 
 }  // namespace sylva

@@ -2,15 +2,62 @@
 
 #include <cstdio>
 
+#include "api/environment_pass.h"
 #include "api/input_queries.h"
+#include "api/model_requests.h"
+#include "api/views.h"
 #include "turtle/cpfg_symbols.h"
 #include "turtle/interpreter.h"
+#include "env/environment.h"
+#include "support/diagnostic.h"
 
 namespace sylva {
+namespace {
+
+bool is_comm_file(const std::string& path) {
+  return path.size() > 2 && (path.compare(path.size() - 2, 2, ".e") == 0 || path.compare(path.size() - 2, 2, ".E") == 0);
+}
+
+// The input files without the environment's .e file, which the engine reads
+// itself (lpfg recognises it by its extension).
+std::vector<std::string> without_comm_files(const std::vector<std::string>& paths) {
+  std::vector<std::string> out;
+  for (const std::string& path : paths)
+    if (!is_comm_file(path)) out.push_back(path);
+  return out;
+}
+
+}  // namespace
+
+void Simulation::start_environment(const EnvironmentOptions& options, const std::vector<std::string>& input_files,
+                                   const derive::Derivation::MessageSink& messages) {
+  std::string comm_file = options.comm_file;
+  for (const std::string& path : input_files) {
+    if (!is_comm_file(path)) continue;
+    if (!comm_file.empty() && comm_file != path)
+      throw ModelError(SourceLocation{path, 0, 0}, "a second communication specification file (the first is " +
+                                                       comm_file + "); a model talks to one environment");
+    comm_file = path;
+  }
+  if (comm_file.empty() && !options.field) return;
+  env::CommSpec spec = comm_file.empty() ? env::CommSpec::everything() : env::read_comm_spec(comm_file);
+  auto verbose = [messages](const std::string& text) {
+    if (messages) messages(text);
+    else std::fputs(text.c_str(), stderr);
+  };
+  // Made first: a model the environment cannot serve fails before a program is started.
+  environment_pass_ = std::make_unique<EnvironmentPass>(spec, derivation_->types(), options.clean_ea20, model_path_,
+                                                        std::move(verbose));
+  field_ = options.field ? options.field
+                         : std::shared_ptr<env::Field>(env::make_field(spec, env::FieldOptions{options.timeout_seconds}));
+  derivation_->set_environment_pass(
+      [this](derive::Derivation& d) { environment_pass_->run(d, turtle_settings_, *field_); });
+}
 
 Simulation::Simulation(const std::string& model_path, const SimulationOptions& options,
-                       derive::Derivation::MessageSink messages) {
-  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(options.input_files, options.build.compiler));
+                       derive::Derivation::MessageSink messages)
+    : model_path_(model_path) {
+  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(without_comm_files(options.input_files), options.build.compiler));
   for (const std::string& warning : inputs_->warnings) {
     if (messages) messages(warning + "\n");
     else std::fprintf(stderr, "%s\n", warning.c_str());
@@ -19,6 +66,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
 
   build::BuildOptions build = options.build;
   for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
+  for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
+  for (const std::string& define : parameter_name_defines(*inputs_)) build.defines.push_back(define);
   build::BuiltModel built = build::build_model(model_path, build);
   compiled_now_ = built.compiled_now;
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);
@@ -27,6 +76,7 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   answers_ = std::make_unique<InputAnswers>(*inputs_);
   control.inputs = answers_.get();
   control.input_query = &answer_input_query;
+  const derive::Derivation::MessageSink environment_messages = messages;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
   if (derivation_->types().cpfg()) {
     // A cpfg model's turtle symbols, looked up once for every interpretation;
@@ -35,8 +85,18 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
     derivation_->add_query_modules(symbols->query_modules());
     turtle_settings_.cpfg_symbols = std::move(symbols);
   }
+  requests_ = std::make_unique<ModelRequests>(*this);
+  control.requests = requests_.get();
+  control.request = &ModelRequests::handle;
+  derivation_->set_phase_hook(
+      [this](derive::Derivation::Phase phase, bool stopped) {
+        // A run starts from the curves as read, whatever the last run did to them.
+        if (phase == derive::Derivation::Phase::Starting) answers_->restore_curves();
+        requests_->on_phase(phase, stopped);
+      });
   derivation_->set_query_pass(
       [this](derive::Derivation& d) { turtle::fill_query_modules(d, turtle_settings_); });
+  start_environment(options.environment, options.input_files, environment_messages);
 }
 
 Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options,
@@ -44,15 +104,35 @@ Simulation::Simulation(const std::string& model_path, const build::BuildOptions&
     : Simulation(model_path, SimulationOptions{options, {}}, std::move(messages)) {}
 
 Simulation::~Simulation() {
+  if (field_) {
+    try {
+      field_->finish();
+    } catch (...) {
+      // The run is over; a program that fails to exit cleanly was killed.
+    }
+  }
   if (library_) {
     abi::ControlState& control = *library_->descriptor().control;
     control.inputs = nullptr;
     control.input_query = nullptr;
+    control.requests = nullptr;
+    control.request = nullptr;
   }
 }
 
-geometry::Scene Simulation::scene(std::string* trace) {
-  return turtle::interpret_scene(*derivation_, turtle_settings_, trace);
+geometry::Scene Simulation::scene(std::string* trace) { return scene(primary_view(), trace); }
+
+geometry::Scene Simulation::scene(int view, std::string* trace) {
+  derivation_->set_view(view);
+  geometry::Scene result = turtle::interpret_scene(*derivation_, turtle_settings_, trace);
+  derivation_->set_view(0);  // the query pass uses view 0's rules (LPFG manual 5.12)
+  return result;
 }
+
+const std::vector<int>& Simulation::views() const { return requests_->views(); }
+
+void Simulation::set_output_options(const OutputOptions& options) { requests_->options = options; }
+
+bool Simulation::take_display_request() { return requests_->take_display_request(); }
 
 }  // namespace sylva

@@ -11,6 +11,7 @@
 #include "build/model_builder.h"
 #include "build/model_library.h"
 #include "derive/derivation.h"
+#include "env/field.h"
 #include "geometry/scene.h"
 #include "io/input_files.h"
 #include "turtle/turtle_settings.h"
@@ -18,12 +19,32 @@
 namespace sylva {
 
 class InputAnswers;
+class EnvironmentPass;
+class ModelRequests;
+struct OutputOptions;
+
+// Open L-systems: the environment the model's communication modules (E1,
+// E2, EA20, cpfg's ?E) talk to after every step. See docs/environment.md.
+struct EnvironmentOptions {
+  // The communication specification file (.e): the program to run and what
+  // to send it. A .e file among SimulationOptions::input_files is taken too.
+  std::string comm_file;
+  // An environment of the embedding program's own: answers the queries
+  // instead of the .e file's executable (which is then not started). With no
+  // .e file every turtle field and the following module are sent.
+  std::shared_ptr<env::Field> field;
+  // How long an external program may take over one pass.
+  double timeout_seconds = 60;
+  // lpfg's -cleanEA20: EA20's values are zeroed before answers are written.
+  bool clean_ea20 = false;
+};
 
 struct SimulationOptions {
   build::BuildOptions build;
   // View, animation, colormap, material, contour and function files, in the
   // order given (lpfg's command line): ids of contours and functions follow it.
   std::vector<std::string> input_files;
+  EnvironmentOptions environment = {};
 };
 
 class Simulation {
@@ -44,6 +65,20 @@ class Simulation {
   // The current string drawn by the turtle; `trace` receives the turtle's
   // commands one per line.
   geometry::Scene scene(std::string* trace = nullptr);
+  // The same drawn in view `view` (its vgroup's interpretation rules, LPFG
+  // manual 7.3); scene() draws primary_view().
+  geometry::Scene scene(int view, std::string* trace = nullptr);
+
+  const std::string& model_path() const { return model_path_; }
+  const abi::ModelDescriptor& descriptor() const { return library_->descriptor(); }
+  // Views turned on by UseView in this run, in increasing order (empty: the
+  // model draws view 0 only), and the first of them.
+  const std::vector<int>& views() const;
+  int primary_view() const { return views().empty() ? 0 : views().front(); }
+  // The size of images the model writes itself (OutputFrame).
+  void set_output_options(const OutputOptions& options);
+  // Whether the model called DisplayFrame since the last time this was asked.
+  bool take_display_request();
 
  private:
   std::unique_ptr<io::InputFiles> inputs_;
@@ -51,6 +86,13 @@ class Simulation {
   turtle::TurtleSettings turtle_settings_;
   std::unique_ptr<build::ModelLibrary> library_;
   std::unique_ptr<derive::Derivation> derivation_;
+  // The environment, when the model has one (kept before the pass that uses it).
+  std::shared_ptr<env::Field> field_;
+  std::unique_ptr<EnvironmentPass> environment_pass_;
+  void start_environment(const EnvironmentOptions& options, const std::vector<std::string>& input_files,
+                         const derive::Derivation::MessageSink& messages);
+  std::unique_ptr<ModelRequests> requests_;
+  std::string model_path_;
   bool compiled_now_ = false;
 };
 

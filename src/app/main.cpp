@@ -3,12 +3,16 @@
 
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "api/outputs.h"
 #include "api/simulation.h"
+#include "api/verify_string.h"
+#include "api/views.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
+#include "io/string_reader.h"
 #include "io/string_text.h"
 #include "support/diagnostic.h"
 
@@ -36,17 +40,40 @@ struct RunOptions {
   std::string model;
   std::vector<std::string> inputs;
   int steps = -1;
-  std::string string_path, interpreted_path, turtle_path, frames_dir;
+  std::string string_path, interpreted_path, turtle_path, frames_dir, axiom_from;
   std::vector<std::string> outputs;
   sylva::OutputOptions output;
+  sylva::EnvironmentOptions environment;
 };
+
+// VerifyString: (LPFG manual 10.4). On a mismatch lpfg's two files of module
+// names, Verify_MODEL_expected.txt and Verify_MODEL_actual.txt, are written in
+// the current folder, and the run fails.
+bool check_verify_string(sylva::Simulation& simulation, const std::string& model) {
+  const sylva::StringVerification v = sylva::verify_string(simulation);
+  if (v.outcome == sylva::StringVerification::kNoStatement) return true;
+  if (v.outcome == sylva::StringVerification::kSuccess) {
+    std::fprintf(stderr, "Verify: Success\n");
+    return true;
+  }
+  const std::string name = std::filesystem::path(model).filename().string();
+  const std::string expected = "Verify_" + name + "_expected.txt", actual = "Verify_" + name + "_actual.txt";
+  sylva::io::write_output_file(expected, v.expected);
+  sylva::io::write_output_file(actual, v.actual);
+  std::fprintf(stderr, "Verify: Fail\n%s: error: the derived string is not the one VerifyString: gives: %s (see %s and %s)\n",
+               model.c_str(), v.difference.c_str(), expected.c_str(), actual.c_str());
+  return false;
+}
 
 int run_command(const RunOptions& r, const CommonOptions& o) {
   // Bad output names fail before any work is done.
   for (const std::string& path : r.outputs) sylva::check_output_path(path);
   sylva::SimulationOptions options{o.build, r.inputs};
+  options.environment = r.environment;
   sylva::Simulation simulation(r.model, options);
+  simulation.set_output_options(r.output);
   sylva::derive::Derivation& d = simulation.derivation();
+  if (!r.axiom_from.empty()) d.set_initial_string(sylva::io::read_string_file(r.axiom_from, d.types()));
   bool derived = false;
   if (!r.frames_dir.empty()) {
     int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
@@ -56,14 +83,21 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     derived = d.steps_done() == steps || d.stop_requested();
   }
   if (!derived) d.run(r.steps);
-  if (!r.interpreted_path.empty())
+  if (!check_verify_string(simulation, r.model)) return 1;
+  if (!r.interpreted_path.empty()) {
+    d.set_view(simulation.primary_view());  // as the first view draws it
     sylva::io::write_output_file(r.interpreted_path, sylva::io::format_string(d.interpreted(), d.types()));
+    d.set_view(0);
+  }
   if (!r.turtle_path.empty() || !r.outputs.empty()) {
     // One interpretation serves the turtle's trace and every output file.
     std::string trace;
     const sylva::geometry::Scene scene = simulation.scene(r.turtle_path.empty() ? nullptr : &trace);
     if (!r.turtle_path.empty()) sylva::io::write_output_file(r.turtle_path, trace);
-    for (const std::string& path : r.outputs) sylva::write_output(path, scene, simulation, r.output);
+    for (const std::string& path : r.outputs)
+      for (const sylva::ViewOutput& out : sylva::view_outputs(path, simulation, r.output))
+        sylva::write_output(out.path, out.view == simulation.primary_view() ? scene : simulation.scene(out.view),
+                            simulation, out.size, out.view);
   }
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
                             !r.frames_dir.empty();
@@ -91,8 +125,19 @@ int main(int argc, char** argv) {
   run->add_option("model", r.model, "The model file (L+C, usually *.l)")->required()->type_name("MODEL");
   run->add_option("inputs", r.inputs,
                   "Input files, recognised by extension in any order as lpfg takes them: view (.v), animation "
-                  "(.a), colormap (.map), materials (.mat), contours (.con, .cset), functions (.func, .fset)")
+                  "(.a), colormap (.map), materials (.mat), contours (.con, .cset), functions (.func, .fset), "
+                  "environment (.e)")
       ->type_name("FILE...");
+  run->add_option("-e,--environment", r.environment.comm_file,
+                  "The communication specification file of the model's environment (cpfg's -e; a .e file among "
+                  "the input files is taken as well)")
+      ->type_name("FILE.e");
+  run->add_option("--env-timeout", r.environment.timeout_seconds,
+                  "Seconds an environmental program may take to answer one pass before it is stopped (default 60)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("SECONDS");
+  run->add_flag("--clean-ea20,--cleanEA20", r.environment.clean_ea20,
+                "Zero EA20's values before the environment's answers are written (lpfg's -cleanEA20)");
   run->add_option("--steps,-n", r.steps, "Number of derivation steps (default: the model's derivation length)")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
@@ -112,7 +157,8 @@ int main(int argc, char** argv) {
       ->type_name("FILE");
   run->add_option("-o,--output", r.outputs,
                   "Write the final state to FILE, in the format its extension names: mesh (.obj with .mtl, .ply, "
-                  ".glb), drawing (.svg, .pdf, .ps, .eps) or image (.png); repeatable")
+                  ".glb), drawing (.svg, .pdf, .ps, .eps) or image (.png); repeatable. A model drawing several "
+                  "views (UseView) writes one file per view: FILE for the first, FILE-NAME.ext for the others")
       ->type_name("FILE");
   run->add_option("--width", r.output.width, "Width of images and drawings in pixels (default 800)")
       ->check(CLI::Range(1, 16384));
@@ -122,6 +168,9 @@ int main(int argc, char** argv) {
                   "Write one PNG per animation frame into DIR (frames from the animation file's first frame, "
                   "last frame and step; every step without one)")
       ->type_name("DIR");
+  run->add_option("--axiom-from", r.axiom_from,
+                  "Start from the string saved in FILE (by --string or OutputString) instead of the axiom")
+      ->type_name("FILE");
   run->add_option("--turtle", r.turtle_path,
                   "Write the turtle's commands for the final string to FILE or '-', one per line")
       ->type_name("FILE");

@@ -15,6 +15,24 @@ namespace sylva::derive {
 // means every module counts.
 using SkipTable = const std::uint8_t*;
 
+// Where matching stands in a string: a byte offset, and whether it has gone
+// once across the ends of a ring (it may not go across a second time, so a
+// match never runs round the ring for ever).
+struct ContextCursor {
+  std::size_t at = 0;
+  bool wrapped = false;
+};
+
+// The same matches from a cursor, which on success is moved past the matched
+// modules: right context leaves it after the last, left context at the start
+// of the leftmost. In-body context tests (InLeftContext ...) carry on from
+// there. In a ring, branches may open before the end of the string and close
+// after its start; skipping them goes across the ends.
+bool match_right_context(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n, SkipTable skipped,
+                         const unsigned char** params);
+bool match_left_context(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n, SkipTable skipped,
+                        const unsigned char** params);
+
 // Matches `pattern` (n modules, in string order) starting at `pos` and going
 // right. On success params[k] points at the parameters of the module matched
 // by pattern[k].

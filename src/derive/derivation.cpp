@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "derive/group_check.h"
+#include "derive/in_body_context.h"
 #include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
 
@@ -34,6 +36,13 @@ bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rul
   return false;
 }
 
+// Marks a pass that applies rules: the string it reads must not be replaced.
+struct PassGuard {
+  int& count;
+  explicit PassGuard(int& c) : count(c) { ++count; }
+  ~PassGuard() { --count; }
+};
+
 }  // namespace
 
 Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
@@ -52,6 +61,8 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
   sub_lsystems_ = (model.flags & abi::kModelSubLsystems) != 0;
   lsystems_.assign(1, sub_lsystems_ ? model.main_lsystem : 0);
   uses_query_modules_ = predecessor_holds({rt::mid::GetPos, rt::mid::GetHead, rt::mid::GetLeft, rt::mid::GetUp});
+  for (std::uint32_t r = 0; r < model.rule_count; ++r)
+    if (model.rules[r].kind == RuleKind::Interpretation && model.rules[r].view != 0) has_views_ = true;
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
 }
@@ -128,24 +139,64 @@ void Derivation::begin() {
   c.stop_requested = false;
   c.step = 0;
   c.current_group = c.next_group = 0;
+  c.gillespie_random = 0;  // every run starts as SeedGillespie(0) would
+  c.gillespie_time = 0;
+  c.environment = true;
   steps_done_ = 0;
-  if (model_.start) model_.start();
-  ring_ = model_.ring && model_.ring() != 0;
-  if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
+  phase(Phase::Starting, false);
   string_.clear();
-  model_.axiom(string_.buffer());
-  if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
+  loaded_in_start_ = false;
+  in_start_ = true;
+  if (model_.start) model_.start();
+  in_start_ = false;
+  ring_ = model_.ring && model_.ring() != 0;
+  if (loaded_in_start_) {
+    // LoadString in Start: that string, not the axiom.
+  } else if (initial_string_) {
+    string_.assign(initial_string_->data(), initial_string_->size_bytes());
+  } else {
+    if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
+    string_.clear();
+    model_.axiom(string_.buffer());
+    if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
+  }
   if (uses_query_modules_ && query_pass_) query_pass_(*this);
+  if (environment_pass_ && c.environment) environment_pass_(*this);
   begun_ = true;
+  phase(Phase::Started, false);
+}
+
+void Derivation::phase(Phase p, bool stopped_before) {
+  if (phase_hook_) phase_hook_(p, !stopped_before && control().stop_requested);
+}
+
+void Derivation::set_initial_string(const ModuleString& string) {
+  initial_string_.emplace();
+  initial_string_->assign(string.data(), string.size_bytes());
+}
+
+void Derivation::replace_string(ModuleString string) {
+  if (passes_running_ > 0)
+    throw ModelError(SourceLocation{model_.source_file, 0, 0},
+                     "LoadString may only be called in a control statement (Start, StartEach, EndEach, End), "
+                     "not while rules are applied");
+  string_ = std::move(string);
+  if (in_start_) loaded_in_start_ = true;
 }
 
 void Derivation::step() {
   if (!begun_) begin();
   abi::ControlState& c = control();
+  const bool stopped_before = c.stop_requested;
   if (model_.start_each) model_.start_each();
+  require_defined_group(model_, c.next_group);
   c.current_group = c.next_group;
-  if (c.forward) derive_forward();
-  else derive_backward();
+  {
+    PassGuard guard(passes_running_);
+    if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
+    else if (c.forward) derive_forward();
+    else derive_backward();
+  }
   if (string_.size_bytes() > 0)
     growth_ = std::max(1.0, static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()));
   std::swap(string_, next_);
@@ -154,10 +205,13 @@ void Derivation::step() {
   decompose();
   if (uses_query_modules_ && query_pass_) query_pass_(*this);
   if (model_.end_each) model_.end_each();
+  if (environment_pass_ && c.environment) environment_pass_(*this);
+  phase(Phase::Stepped, stopped_before);
 }
 
 void Derivation::decompose() {
   if (!rules_.has_rules(RuleKind::Decomposition)) return;
+  PassGuard guard(passes_running_);
   depth_warnings_.clear();  // warned once per pass, as lpfg does
   next_.clear();
   int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
@@ -167,7 +221,9 @@ void Derivation::decompose() {
 }
 
 void Derivation::finish() {
+  const bool stopped_before = control().stop_requested;
   if (model_.end) model_.end();
+  phase(Phase::Finished, stopped_before);
 }
 
 void Derivation::run(int steps) {
@@ -193,6 +249,7 @@ ModuleString Derivation::interpreted() {
 }
 
 void Derivation::interpret(InterpretedModuleVisitor& visitor) {
+  PassGuard guard(passes_running_);
   const StringView src = current_view();
   unsigned char* data = const_cast<unsigned char*>(string_.data());
   const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
@@ -246,16 +303,23 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
     at = src.next(at);
   }
   SkipTable skipped = skip_table(rule);
-  if (l && !match_left_context(src, pos, rule.pattern + nl, l, skipped, params + nl)) return false;
-  if (r && !match_right_context(src, at, strict + s, r, skipped, params + nl + l + s)) return false;
+  // Where each context ends: in-body context tests carry on from there.
+  ContextCursor left{pos, false}, right{at, false}, new_left{built.size_bytes(), false};
+  if (l && !match_left_context(src, left, rule.pattern + nl, l, skipped, params + nl)) return false;
+  if (r && !match_right_context(src, right, strict + s, r, skipped, params + nl + l + s)) return false;
   if (nl) {
     // A view made now: an earlier rule's body may have grown (and moved) the buffer.
     const StringView new_string = built.view(types_);
-    if (!match_left_context(new_string, new_string.end, rule.pattern, nl, skipped, params)) return false;
+    if (!match_left_context(new_string, new_left, rule.pattern, nl, skipped, params)) return false;
   }
   if (!call_body) return true;
   const std::size_t mark = out.size_bytes();
   abi::RuleCall call{out.buffer(), false};
+  InBodyContext in_body(src, skipped, left, right);
+  if (rule.kind != RuleKind::Interpretation)
+    in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left);
+  in_body.attach(call);
+  if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
   rule.body(&call, params);
   if (!call.produced) {
     out.truncate(mark);  // no produce: the rule did not apply, and nproduce'd modules go
@@ -280,12 +344,17 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
     params[l + k] = module_params(src.data, at);
   }
   SkipTable skipped = skip_table(rule);
-  if (l && !match_left_context(src, at, rule.pattern, l, skipped, params)) return false;
-  if (r && !match_right_context(src, end, strict + s, r, skipped, params + l + s)) return false;
-  if (nr && !match_right_context(new_string, new_string.begin, strict + s + r, nr, skipped, params + l + s + r))
+  // Where each context ends: in-body context tests carry on from there.
+  ContextCursor left{at, false}, right{end, false}, new_right{new_string.begin, false};
+  if (l && !match_left_context(src, left, rule.pattern, l, skipped, params)) return false;
+  if (r && !match_right_context(src, right, strict + s, r, skipped, params + l + s)) return false;
+  if (nr && !match_right_context(new_string, new_right, strict + s + r, nr, skipped, params + l + s + r))
     return false;
   successor_.clear();
   abi::RuleCall call{successor_.buffer(), false};
+  InBodyContext in_body(src, skipped, left, right);
+  in_body.set_new_right(new_string, new_right);
+  in_body.attach(call);
   rule.body(&call, params);
   if (!call.produced) return false;
   *consumed = at;
@@ -294,10 +363,18 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
 
 bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t pos, ModuleString& out,
                                const ModuleString& built, bool call_body, std::size_t* consumed) {
-  return for_each_group(rules_.forward(kind, src.id_at(pos)), model_.rules, current_group(), !sub_lsystems_,
-                        [&](const abi::Rule& rule) {
-                          return try_forward(rule, src, pos, out, built, call_body, consumed);
-                        });
+  const auto& candidates = rules_.forward(kind, src.id_at(pos));
+  if (kind != RuleKind::Interpretation || !has_views_)
+    return for_each_group(candidates, model_.rules, current_group(), !sub_lsystems_, [&](const abi::Rule& rule) {
+      return try_forward(rule, src, pos, out, built, call_body, consumed);
+    });
+  // Interpretation in views: the view's vgroup first, then the rules outside any vgroup.
+  auto in_view = [&](int view) {
+    return for_each_group(candidates, model_.rules, current_group(), !sub_lsystems_, [&](const abi::Rule& rule) {
+      return rule.view == view && try_forward(rule, src, pos, out, built, call_body, consumed);
+    });
+  };
+  return in_view(view_) || (view_ != 0 && in_view(0));
 }
 
 // ---- derivation steps --------------------------------------------------------

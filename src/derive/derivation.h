@@ -6,10 +6,12 @@
 
 #include <deque>
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "derive/gillespie.h"
 #include "derive/rule_index.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
@@ -56,6 +58,25 @@ class Derivation {
   const ModuleTypes& types() const { return types_; }
   // The string with interpretation rules applied (what the turtle draws).
   ModuleString interpreted();
+  // The view (LPFG manual 7.3) whose interpretation rules interpret() and
+  // interpreted() apply: vgroup `view`'s, then those outside any vgroup.
+  void set_view(int view) { view_ = view; }
+  int view() const { return view_; }
+
+  // Starts the next begin() from `string` instead of the axiom (a saved
+  // string: it is not decomposed again).
+  void set_initial_string(const ModuleString& string);
+  // Replaces the current string (LoadString). Only between derivation
+  // passes: throws ModelError while rules are being applied. Called from
+  // Start, the axiom is not used.
+  void replace_string(ModuleString string);
+
+  // Points in a run where the engine acts on the model's requests:
+  // Starting before Start, Started after the axiom, Stepped after each step
+  // (after EndEach), Finished after End. `stopped` says whether Stop() was
+  // called since the previous point.
+  enum class Phase { Starting, Started, Stepped, Finished };
+  void set_phase_hook(std::function<void(Phase, bool stopped)> hook) { phase_hook_ = std::move(hook); }
   // The same, module by module, to a visitor.
   void interpret(InterpretedModuleVisitor& visitor);
 
@@ -71,6 +92,15 @@ class Derivation {
   // Called after the axiom and after every step (after decomposition, before
   // EndEach) when the model uses query modules.
   void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
+  // The environmental pass of open L-systems (communication modules E1, E2,
+  // EA20, cpfg's ?E): called after the axiom and after every step (after
+  // EndEach), while the model's Environment() switch is on (it is at every
+  // begin(); Start may turn it off). The manuals speak of a pass "after each
+  // derivation step" (EnviroManual 1.4, LPFG manual 6.1.3); the pass after the
+  // axiom is the one the query modules get too, and published open L-systems
+  // need it: the clover model's axiom A(1)?E(0,0) lets its apex grow only if
+  // the first step already sees the light the environment answered.
+  void set_environment_pass(std::function<void(Derivation&)> pass) { environment_pass_ = std::move(pass); }
 
  private:
 
@@ -94,6 +124,8 @@ class Derivation {
   // One pass of productions over string_ into next_.
   void derive_forward();
   void derive_backward();
+  // One step of a Gillespie group (gillespie_step.cpp): one reaction fires.
+  void derive_gillespie();
   // Decomposition or interpretation: rules applied recursively to each module
   // and its successors, up to max_depth levels.
   void expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out);
@@ -130,7 +162,19 @@ class Derivation {
   bool sub_lsystems_ = false;
   std::vector<int> lsystems_;
   std::function<void(Derivation&)> query_pass_;
+  std::function<void(Derivation&)> environment_pass_;
+  std::function<void(Phase, bool)> phase_hook_;
+  void phase(Phase p, bool stopped_before);
+  int view_ = 0;
+  bool has_views_ = false;   // some interpretation rule is in a vgroup
+  int passes_running_ = 0;   // rules are being applied: the string must stay
+  bool in_start_ = false;
+  bool loaded_in_start_ = false;
+  std::optional<ModuleString> initial_string_;
   ModuleString interpretation_out_;
+  ReactionSet reactions_;
+  ReactionSet* gathering_reactions_ = nullptr;  // set while a Gillespie step runs bodies
+  ModuleString reaction_scratch_;               // where those bodies write
   double growth_ = 1.5;  // bytes after / before the last step
 };
 

@@ -10,8 +10,9 @@
 // This is the same data as the Virtual Laboratory's communication library
 // (CTURTLE, Cmodule_type) so that a program written for it maps one to one.
 // Built-in programs (honda81, chiba, ...) and the external-process bridge are
-// Fields; users add their own by implementing one (see make_field in
-// environment.h for how a .e file picks one).
+// Fields; users add their own by implementing one: passed to Simulation
+// (EnvironmentOptions::field) or loaded as a plugin (see make_field in
+// environment.h for how a .e file picks one, and docs/environment.md).
 #pragma once
 
 #include <array>
@@ -80,8 +81,9 @@ class Field {
 
   // Answers every query of one environmental pass. `answers` has one entry per
   // query, all unset on entry. `step` is the number of derivation steps done
-  // (0 for the pass after the axiom). Throws ModelError (or std::runtime_error)
-  // with a message naming the program on failure.
+  // (0 for the pass after the axiom).
+  // Throws ModelError (or std::runtime_error) with a message naming the
+  // program on failure.
   virtual void answer(std::span<const Query> queries, std::span<Answer> answers, int step) = 0;
 
   // Called once when the simulation ends (external programs are told to exit).

@@ -18,6 +18,9 @@ struct Contour {
 
   std::string name;
   std::vector<Vec3> points;  // in the contour's plane (x: left, y: up), as given
+  // How many consecutive entries of `points` each control point of the file
+  // is (its multiplicity); empty when every point is one entry.
+  std::vector<int> multiplicities;
   bool closed = true;
   Curve curve = Curve::BSpline;
   int samples = 0;  // the file's "samples:": sides of a generalized cylinder; 0: not given

@@ -75,6 +75,9 @@ struct TriangleGroup {
   std::uint32_t index_count = 0;  // a multiple of 3
   int color = 1;
   Provenance from;
+  // cpfg's @; @, (CPFG manual 6.3): the colour of the side the triangles'
+  // normals point away from; -1: that side is coloured as the front.
+  int back_color = -1;
 };
 
 struct Scene {

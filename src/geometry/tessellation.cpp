@@ -158,6 +158,7 @@ class Builder {
     auto first = scene.indices.begin() + g.first_index;
     if (std::any_of(first, first + count, [&](std::uint32_t i) { return i >= scene.positions.size(); })) return;
     MeshPart part = begin_part(part_kind(g.kind), g.color, g.from, mesh_.indices);
+    part.back_color = g.back_color;
     std::uint32_t base = vertex_count();
     for (auto it = first; it != first + count; ++it) {
       std::uint32_t i = *it;

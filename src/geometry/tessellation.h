@@ -26,6 +26,11 @@ struct MeshPart {
   std::uint32_t index_count = 0;
   int color = 1;
   Provenance from;
+  int back_color = -1;  // the TriangleGroup's; -1: both sides in `color`
+  // Which side of the triangles a part shows: both, or, once
+  // split_back_sides has given the back its own part, one.
+  enum class Side : std::uint8_t { Both, Front, Back };
+  Side side = Side::Both;
 };
 
 struct TriangleMesh {

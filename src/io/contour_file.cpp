@@ -72,6 +72,7 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
           in.fail(m_word, "expected a multiplicity of 1 to 3, found '" + m_word.text + "'");
         // A point of multiplicity m is m coincident B-spline control points.
         for (int k = 0; k < multiplicity; ++k) contour.points.push_back(p);
+        contour.multiplicities.push_back(multiplicity);
       }
     } else if (key == "type:") {
       contour.closed = closed_type(in, in.next("the contour type"));

@@ -19,10 +19,14 @@ constexpr std::size_t kMaxMaterialRuns = 4096;
 // too often, updating the parts' first indices.
 void group_by_material(std::vector<MeshPart>& parts, std::vector<std::uint32_t>& indices) {
   std::size_t changes = 0;
-  for (std::size_t i = 1; i < parts.size(); ++i) changes += parts[i].color != parts[i - 1].color;
+  for (std::size_t i = 1; i < parts.size(); ++i)
+    changes += parts[i].color != parts[i - 1].color || parts[i].back_color != parts[i - 1].back_color;
   if (changes <= kMaxMaterialRuns) return;
   std::stable_sort(parts.begin(), parts.end(),
-                   [](const MeshPart& a, const MeshPart& b) { return (a.color & 255) < (b.color & 255); });
+                   [](const MeshPart& a, const MeshPart& b) {
+                     return (a.color & 255) != (b.color & 255) ? (a.color & 255) < (b.color & 255)
+                                                               : a.back_color < b.back_color;
+                   });
   std::vector<std::uint32_t> sorted;
   sorted.reserve(indices.size());
   for (MeshPart& p : parts) {
@@ -67,9 +71,9 @@ Batches::Batches(const geometry::Scene& scene, std::vector<geometry::TriangleMes
   for (std::size_t m = 0; m < meshes.size(); ++m)
     for (const MeshPart& p : parts[m])
       add({Draw::Kind::Triangles, static_cast<std::uint32_t>(m), p.first_index, p.index_count,
-           options.lit ? (p.color & 255) : -1, 1});
+           options.lit ? (p.color & 255) : -1, options.lit && p.back_color >= 0 ? (p.back_color & 255) : -1, 1});
   for (std::size_t l = 0; l < line_widths_.size(); ++l)
-    add({Draw::Kind::Lines, 0, static_cast<std::uint32_t>(2 * l), 2, -1, line_widths_[l]});
+    add({Draw::Kind::Lines, 0, static_cast<std::uint32_t>(2 * l), 2, -1, -1, line_widths_[l]});
 }
 
 void Batches::build_lines(const geometry::Scene& scene, const BatchOptions& options) {
@@ -137,7 +141,8 @@ void Batches::add(const Draw& draw) {
   if (!draws_.empty()) {
     Draw& last = draws_.back();
     if (last.kind == draw.kind && last.mesh == draw.mesh && last.material == draw.material &&
-        last.width == draw.width && last.first + last.count == draw.first) {
+        last.back_material == draw.back_material && last.width == draw.width &&
+        last.first + last.count == draw.first) {
       last.count += draw.count;
       return;
     }

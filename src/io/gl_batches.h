@@ -26,6 +26,7 @@ struct Draw {
   std::uint32_t first = 0;  // Triangles: into the mesh's indices; Lines: into line_positions()
   std::uint32_t count = 0;  // indices or line vertices
   int material = -1;        // lit triangles: the colour index whose material to use
+  int back_material = -1;   // lit triangles: the back side's (cpfg's @; @,); -1: as the front
   float width = 1;          // lines: in pixels
 };
 

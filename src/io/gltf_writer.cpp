@@ -26,9 +26,17 @@ double linear(float srgb) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-tinygltf::Material material(int color, const geometry::Material& m) {
+// Materials are indexed by colour slot, plus 256 for the one-sided copy that
+// parts with a back colour of their own use (geometry/back_sides.h).
+constexpr std::size_t kOneSided = 256;
+std::size_t material_slot(const MeshPart& part) {
+  return static_cast<std::size_t>(mesh_support::color_slot(part.color)) +
+         (part.side == MeshPart::Side::Both ? 0 : kOneSided);
+}
+
+tinygltf::Material material(int color, const geometry::Material& m, bool double_sided) {
   tinygltf::Material out;
-  out.name = mesh_support::material_name(color);
+  out.name = mesh_support::material_name(color) + (double_sided ? "" : "_one_sided");
   double alpha = std::clamp(1.0 - static_cast<double>(m.transparency), 0.0, 1.0);
   out.pbrMetallicRoughness.baseColorFactor = {linear(m.diffuse.r), linear(m.diffuse.g), linear(m.diffuse.b), alpha};
   out.pbrMetallicRoughness.metallicFactor = 0;
@@ -36,8 +44,9 @@ tinygltf::Material material(int color, const geometry::Material& m) {
   out.pbrMetallicRoughness.roughnessFactor = std::sqrt(2.0 / (std::max(0.0f, m.shininess) + 2.0));
   out.emissiveFactor = {linear(m.emission.r), linear(m.emission.g), linear(m.emission.b)};
   out.alphaMode = alpha < 1 ? "BLEND" : "OPAQUE";
-  // Flat strips, discs and the turtle's polygons are seen from both sides.
-  out.doubleSided = true;
+  // Flat strips, discs and the turtle's polygons are seen from both sides,
+  // unless the back has a colour of its own (a part of its own).
+  out.doubleSided = double_sided;
   return out;
 }
 
@@ -53,10 +62,10 @@ class GlbBuilder {
 
   // One primitive per colour: `per` indices an element (3 triangles, 2 lines).
   void add_primitives(const std::vector<MeshPart>& parts, const std::vector<std::uint32_t>& indices, int mode,
-                      std::uint32_t per, const std::array<int, 256>& material_of, tinygltf::Mesh& out) {
-    std::array<std::vector<const MeshPart*>, 256> by_color;
-    for (const MeshPart& part : parts) by_color[static_cast<std::size_t>(mesh_support::color_slot(part.color))].push_back(&part);
-    for (std::size_t color = 0; color < 256; ++color) {
+                      std::uint32_t per, const std::array<int, 2 * kOneSided>& material_of, tinygltf::Mesh& out) {
+    std::array<std::vector<const MeshPart*>, 2 * kOneSided> by_color;
+    for (const MeshPart& part : parts) by_color[material_slot(part)].push_back(&part);
+    for (std::size_t color = 0; color < 2 * kOneSided; ++color) {
       if (by_color[color].empty()) continue;
       ++serial_;
       positions_.clear();
@@ -153,10 +162,15 @@ void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, cons
   model.asset.version = "2.0";
   model.asset.generator = "Sylva";
 
-  std::array<int, 256> material_of{};
-  for (int color : mesh_support::colors_used(mesh)) {
-    material_of[static_cast<std::size_t>(color)] = static_cast<int>(model.materials.size());
-    model.materials.push_back(material(color, palette.at(color)));
+  std::array<int, 2 * kOneSided> material_of{};
+  std::array<bool, 2 * kOneSided> used{};
+  for (const auto* parts : {&mesh.parts, &mesh.line_parts})
+    for (const MeshPart& part : *parts) used[material_slot(part)] = true;
+  for (std::size_t slot = 0; slot < 2 * kOneSided; ++slot) {
+    if (!used[slot]) continue;
+    const int color = static_cast<int>(slot % kOneSided);
+    material_of[slot] = static_cast<int>(model.materials.size());
+    model.materials.push_back(material(color, palette.at(color), slot < kOneSided));
   }
 
   tinygltf::Mesh out;

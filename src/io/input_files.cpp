@@ -72,16 +72,18 @@ InputFiles read_input_files(const std::vector<std::string>& paths, const std::st
       inputs.functions.push_back(read_function_file(path));
     } else if (ext == "fset") {
       for (geometry::Function& f : read_function_set_file(path)) inputs.functions.push_back(std::move(f));
-    } else if (ext == "e" || ext == "vset" || ext == "tset") {
+    } else if (ext == "vset") {
+      for (Parameter& p : read_parameter_file(path)) inputs.parameters.push_back(std::move(p));
+    } else if (ext == "e" || ext == "tset") {
       read_input_file(path, "input file");
-      inputs.warnings.push_back(path + ": warning: " + (ext == "e" ? "environment" : ext == "vset" ? "parameter" : "timeline") +
+      inputs.warnings.push_back(path + ": warning: " + (ext == "e" ? "environment" : "timeline") +
                                 " files are not supported; ignored");
     } else if (ext == "l") {
       throw ModelError(SourceLocation{path, 0, 0}, "an L-system, not an input file: give it as the model");
     } else {
       throw ModelError(SourceLocation{path, 0, 0},
                        "unknown kind of input file" + (ext.empty() ? std::string(" (no extension)") : " (." + ext + ")") +
-                           ": expected .v, .a, .map, .mat, .con, .cset, .func or .fset");
+                           ": expected .v, .a, .map, .mat, .con, .cset, .func, .fset or .vset");
     }
   }
   if (inputs.view) {

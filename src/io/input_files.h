@@ -11,6 +11,7 @@
 #include "geometry/material.h"
 #include "geometry/surface.h"
 #include "io/animation_file.h"
+#include "io/parameter_file.h"
 #include "io/view_file.h"
 
 namespace sylva::io {
@@ -28,6 +29,8 @@ struct InputFiles {
   // .func files and .fset sets in command-line order; func(name, x) finds
   // a function by name.
   std::vector<geometry::Function> functions;
+  // .vset parameters in command-line order; val(name) finds one by name.
+  std::vector<Parameter> parameters;
   // The view and animation files' warnings, and input files read past.
   std::vector<std::string> warnings;
 
@@ -37,8 +40,8 @@ struct InputFiles {
 };
 
 // .v (.dr, older) view, .a animation, .map colormap, .mat materials, .con
-// and .cset contours, .func and .fset functions. The environment (.e),
-// parameter (.vset) and timeline (.tset) files lpfg also takes are read past
+// and .cset contours, .func and .fset functions, .vset parameters. The
+// environment (.e) and timeline (.tset) files lpfg also takes are read past
 // with a warning; any other extension, two view, animation or colour files,
 // or a file that cannot be read is a ModelError naming the file.
 InputFiles read_input_files(const std::vector<std::string>& paths, const std::string& compiler = "");

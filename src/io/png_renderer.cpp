@@ -112,7 +112,9 @@ void set_lights(const std::vector<Light>& given, bool stationary, const geometry
   glLoadMatrixf(view.data());
 }
 
-void set_material(const geometry::Palette& palette, int index) {
+// The material of colour index `index` on the sides `face` (GL_FRONT,
+// GL_BACK or GL_FRONT_AND_BACK).
+void set_material(const geometry::Palette& palette, int index, GLenum face) {
   const geometry::Material& m = palette.at(index);
   const float alpha = 1 - m.transparency;
   auto rgba = [alpha](const Rgb& c) { return std::array<GLfloat, 4>{c.r, c.g, c.b, alpha}; };
@@ -122,11 +124,22 @@ void set_material(const geometry::Palette& palette, int index) {
   // a shape is a darker shade of its colour rather than as bright as the lit one.
   const bool full = palette.from_materials;
   const Rgb ambient = full ? m.ambient : Rgb{m.diffuse.r * 0.25f, m.diffuse.g * 0.25f, m.diffuse.b * 0.25f};
-  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, rgba(ambient).data());
-  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, rgba(m.diffuse).data());
-  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, rgba(full ? m.specular : black).data());
-  glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, rgba(full ? m.emission : black).data());
-  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, std::clamp(m.shininess, 0.0f, 128.0f));
+  glMaterialfv(face, GL_AMBIENT, rgba(ambient).data());
+  glMaterialfv(face, GL_DIFFUSE, rgba(m.diffuse).data());
+  glMaterialfv(face, GL_SPECULAR, rgba(full ? m.specular : black).data());
+  glMaterialfv(face, GL_EMISSION, rgba(full ? m.emission : black).data());
+  glMaterialf(face, GL_SHININESS, std::clamp(m.shininess, 0.0f, 128.0f));
+}
+
+// Both sides in `front`, or (cpfg's @; @,) the back in `back`: two-sided
+// lighting lights the side facing away from the normals with GL_BACK.
+void set_materials(const geometry::Palette& palette, int front, int back) {
+  if (back < 0 || back == front) {
+    set_material(palette, front, GL_FRONT_AND_BACK);
+    return;
+  }
+  set_material(palette, front, GL_FRONT);
+  set_material(palette, back, GL_BACK);
 }
 
 // Without a z buffer lpfg draws the string in order, later modules over
@@ -201,7 +214,7 @@ class SceneDrawer {
   void draw() const {
     constexpr std::uint32_t kLines = ~0u;  // bound: the lines rather than a mesh
     std::uint32_t bound = kLines - 1;
-    int material = -1;
+    int material = -1, back_material = -1;
     float line_width = -1;
     auto set_line_width = [&](float width) {
       if (width != line_width) glLineWidth(line_width = width);
@@ -216,7 +229,8 @@ class SceneDrawer {
           set_line_width(polygon_line_width_);
           bound = d.mesh;
         }
-        if (lit_ && d.material != material) set_material(palette_, material = d.material);
+        if (lit_ && (d.material != material || d.back_material != back_material))
+          set_materials(palette_, material = d.material, back_material = d.back_material);
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, mesh.indices.data() + d.first);
       } else {
         if (bound != kLines) {

@@ -122,6 +122,7 @@ const std::map<std::string, Function>& functions() {
       {"fclose", {"sylva_cpfg_fclose", 1, 1}}, {"fflush", {"sylva_cpfg_fflush", 1, 1}},
       {"curveX", {"sylva_cpfg_curveX", 2, 2}}, {"curveY", {"sylva_cpfg_curveY", 2, 2}},
       {"curveZ", {"sylva_cpfg_curveZ", 2, 2}}, {"curveGAL", {"sylva_cpfg_curveGAL", 1, 1}},
+      {"stop", {"sylva_cpfg_stop", 0, 1}},
   };
   return table;
 }
@@ -196,7 +197,7 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
   }
   auto it = functions().find(name.text);
   if (it == functions().end()) {
-    static const std::set<std::string> later = {"inblob", "stop", "vvXmin"};
+    static const std::set<std::string> later = {"inblob", "vvXmin", "vvXmax", "vvYmin", "vvYmax", "vvymax", "vvZmin", "vvZmax"};
     if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
     c.fail_at(name.pos, "unknown function '" + name.text + "'");
   }
@@ -468,6 +469,12 @@ inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast
 inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveGAL(double id) { return curveLength(static_cast<int>(id)); }
+// stop(n) (CPFG manual 5.6): the run ends after this step; without a window
+// to keep drawing in, n = 1 ("draw and continue") ends it the same way.
+inline double sylva_cpfg_stop(double = 0) {
+  Stop();
+  return 0.0;
+}
 // Files opened by the model (fopen returns 1, 2, ...; 0 when it fails).
 inline ::std::FILE* sylva_cpfg_files[64];
 inline ::std::FILE* sylva_cpfg_file(double id) {

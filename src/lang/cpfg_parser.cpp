@@ -234,7 +234,7 @@ class CpfgParser {
       const int label = digits.empty() ? 0 : std::stoi(digits);
       for (const Block& b : blocks_)
         if (b.label == label) c.fail_at(lp, "a second L-system with label " + std::to_string(label));
-      blocks_.push_back(Block{label, {}, false, {}});
+      blocks_.push_back(Block{label, {}, false, {}, false});
       seen_lsystem_ = true;
       seen_end_ = false;
       section_ = kProductions;
@@ -286,8 +286,12 @@ class CpfgParser {
       if (c.peek() == '-') digits += c.get();
       while (std::isdigit(static_cast<unsigned char>(c.peek()))) digits += c.get();
       if (digits.empty() || digits == "-" || !c.done()) c.fail_at(p, "expected an integer seed after 'seed:'");
-      seed_ = std::stol(digits);
+      // One random stream for all L-systems, seeded by the first seed: (the
+      // main L-system's, when it has one): the draw for each module of the
+      // string comes from it in string order whichever L-system rewrites it.
+      if (!has_seed_) seed_ = std::stol(digits);
       has_seed_ = true;
+      blocks_.back().stochastic = true;
     } else if (key == "define") {
       define(c);
     } else if (key == "start" || key == "starteach" || key == "endeach" || key == "end") {
@@ -600,10 +604,21 @@ class CpfgParser {
     for (const std::string& local : scope.locals) text += "double " + cpfg::variable(local) + " = 0; ";
     text += before;
     if (condition != "true") text += "if (!(" + condition + ")) return; ";
-    if (rule.kind == abi::RuleKind::Production && has_seed_) {
-      text += "sylva_cpfg_r -= " + std::to_string(probability) + "; if (sylva_cpfg_r > 0) return; ";
+    if (rule.kind == abi::RuleKind::Production && blocks_.back().stochastic) {
+      // The module's draw (uniform in [0,1)) times the total probability of
+      // its productions in this L-system, less each production's share in
+      // turn: the first to take it to 0 or below applies.
       const std::string& strict = rule.parts[abi::kStrict].front().name;
-      total_probability_[strict] += probability;
+      const auto key = std::make_pair(blocks_.size() - 1, strict);
+      auto slot = total_slot_.find(key);
+      if (slot == total_slot_.end()) {
+        slot = total_slot_.emplace(key, total_probability_.size()).first;
+        total_probability_.push_back(0);
+      }
+      total_probability_[slot->second] += probability;
+      text += "if (!sylva_cpfg_drawn) { sylva_cpfg_r = sylva_cpfg_total[" + std::to_string(slot->second) +
+              "] * sylva_cpfg_u; sylva_cpfg_drawn = true; } ";
+      text += "sylva_cpfg_r -= " + std::to_string(probability) + "; if (sylva_cpfg_r > 0) return; ";
     }
     text += after;
     if (!text.empty()) rule.body.push_back(BodyPart{BodyPart::kCode, code_at(at, text), {}, token_at(at)});
@@ -647,9 +662,6 @@ class CpfgParser {
                            text.str());
         }
       }
-      if (has_seed_)
-        throw ModelError(SourceLocation{model_.main_file, 1, 1},
-                         "stochastic productions (seed:) in a model with sub-L-systems are not supported yet");
       model_.cpfg_sub_lsystems = true;
       model_.main_lsystem = blocks_.front().label;
       for (const Block& b : blocks_) model_.lsystem_labels.push_back(b.label);
@@ -664,10 +676,11 @@ class CpfgParser {
       control_[ControlStatement::kStart] =
           "{ ::sylva::rt::control.rand48 = " + std::to_string(state) + "ULL; }" + control_[ControlStatement::kStart];
       if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = lines_.front().pos.front();
-      std::string table = "namespace { const double sylva_cpfg_total[] = {";
-      for (const ModuleDecl& m : model_.modules) table += std::to_string(total_probability_[m.name]) + ",";
-      table += "}; void sylva_cpfg_before_module(::sylva::abi::ModuleId id) { sylva_cpfg_r = sylva_cpfg_total[id] * "
-               "::sylva::rt::next_rand48(); } }\n";
+      std::string table = "namespace { [[maybe_unused]] const double sylva_cpfg_total[] = {";
+      for (double total : total_probability_) table += std::to_string(total) + ",";
+      table += "0}; double sylva_cpfg_u = 0; bool sylva_cpfg_drawn = false; "
+               "void sylva_cpfg_before_module(::sylva::abi::ModuleId) { sylva_cpfg_u = ::sylva::rt::next_rand48(); "
+               "sylva_cpfg_drawn = false; } }\n";
       model_.items.insert(model_.items.begin() + 1, Code{verbatim(lines_.front().pos.front(), table)});
       model_.cpfg_stochastic = true;
     }
@@ -691,7 +704,10 @@ class CpfgParser {
   std::vector<Line> lines_;
   std::map<std::string, std::size_t> module_index_;
   std::map<std::string, std::vector<std::string>> by_symbol_;
-  std::map<std::string, double> total_probability_;
+  // The total probability of a module's productions in an L-system (block
+  // index, module name), at the slot total_slot_ gives it.
+  std::map<std::pair<std::size_t, std::string>, std::size_t> total_slot_;
+  std::vector<double> total_probability_;
   std::set<std::string> globals_, arrays_;
   // One per Lsystem: ... endlsystem; the first is the main L-system.
   struct Block {
@@ -699,6 +715,8 @@ class CpfgParser {
     std::vector<std::string> filter_symbols;
     bool filter_consider = false;
     Token filter_at;
+    // A seed: statement makes the L-system's productions stochastic.
+    bool stochastic = false;
   };
   std::vector<Block> blocks_;
   std::vector<std::pair<double, Pos>> calls_;  // ?(label,s) with a constant label

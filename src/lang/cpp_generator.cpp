@@ -58,6 +58,19 @@ class MappedWriter {
     for (const Token& t : code) token(t);
   }
 
+  // Code starting a line of its own at its first token's line and column, so
+  // that a compiler error about it points exactly there.
+  void tokens_in_place(const Code& code) {
+    if (code.empty()) return;
+    const Token& first = code.front();
+    if (!at_line_start_) text_ += '\n';
+    text_ += "# " + std::to_string(first.line) + " " + quoted(files_[first.file]) + "\n";
+    file_ = first.file;
+    line_ = first.line;
+    at_line_start_ = true;
+    tokens(code);
+  }
+
   // Generated text on the current line, attributed to the current position.
   void inline_text(const std::string& s) {
     if (!at_line_start_) text_ += ' ';
@@ -153,6 +166,36 @@ class CppGenerator {
     }
     text += " out->write(\"}\"); }";
     out_.at(s.at, text);
+    out_.at(s.at, struct_parser(s));
+  }
+
+  // One field: read in place, through a copy for a bit-field, an error for a
+  // const field.
+  static std::string member_parser(const std::string& m) {
+    return " if constexpr (requires { ::sylva::rt::parse_value(" + m + ", in); }) { if (!::sylva::rt::parse_value(" +
+           m + ", in)) return false; } else if constexpr (requires { " + m + " = " + m +
+           "; }) { ::std::remove_cvref_t<decltype(" + m +
+           ")> sylva_value{}; if (!::sylva::rt::parse_value(sylva_value, in)) return false; " + m +
+           " = sylva_value; } else { return ::sylva::rt::parse_fail(in, \"a field that can be set\"); }";
+  }
+
+  // Reads back what the printer above writes, fields by name in any order.
+  // A template, so a field that cannot be set (const) reads as an error
+  // instead of failing to compile.
+  static std::string struct_parser(const StructFields& s) {
+    std::string text = "template <class SylvaS> requires ::std::is_same_v<SylvaS, " + s.name +
+                       "> inline bool sylva_parse_value(SylvaS& v, ::sylva::abi::TextSource* in) {"
+                       " if (!::sylva::rt::parse_char(in, '{', \"'{' to begin a struct\")) return false;"
+                       " if (::sylva::rt::parse_char_if(in, '}')) return true;"
+                       " do { const char* sylva_name = nullptr; ::std::size_t sylva_n = 0;"
+                       " if (!::sylva::rt::parse_field_name(in, sylva_name, sylva_n)) return false;";
+    for (const std::string& field : s.fields)
+      text += " if (::sylva::rt::same_name(sylva_name, sylva_n, " + quoted(field) + ")) {" + member_parser("v." + field) +
+              "} else";
+    text += " return ::sylva::rt::unknown_field(in, sylva_name, " + quoted("a field of " + s.name) + ");"
+            " } while (::sylva::rt::parse_char_if(in, ','));"
+            " return ::sylva::rt::parse_char(in, '}', \"'}' to end the struct\"); }";
+    return text;
   }
 
   void emit(const Setting& setting) {
@@ -211,10 +254,57 @@ class CppGenerator {
         out_.tokens(part.code);
         continue;
       }
+      if (part.kind == BodyPart::kPropensity) {
+        emit_propensity(part);
+        continue;
+      }
+      if (part.kind == BodyPart::kInContext) {
+        emit_in_context(part);
+        continue;
+      }
       out_.at(part.at, "{");
       emit_calls(part.modules, "sylva_call->out");
       out_.inline_text(part.kind == BodyPart::kProduce ? "sylva_call->produced = true; return; }" : "}");
     }
+  }
+
+  // A reaction: its successor is written, offered to the engine with its
+  // propensity, and taken back out, so the body goes on to offer the next.
+  void emit_propensity(const BodyPart& part) {
+    out_.at(part.at, "{ const double sylva_propensity = static_cast<double>(");
+    out_.tokens(part.code);
+    out_.inline_text("); const ::std::size_t sylva_mark = sylva_call->out->size; {");
+    emit_calls(part.modules, "sylva_call->out");
+    out_.inline_text("} if (sylva_call->propose) sylva_call->propose(sylva_call, sylva_propensity);"
+                     " sylva_call->out->size = sylva_mark; }");
+  }
+
+  // InLeftContext(A(x) B(y)) and its kin: a bool expression (parenthesized,
+  // as lpfg allows `if InLeftContext(...)`) asking the engine for the
+  // context, then copying the matched parameters into the body's variables.
+  // Each variable is written where it stands in the model, so a type that
+  // does not match the module's is reported at its line and column.
+  void emit_in_context(const BodyPart& test) {
+    static const char* parts[] = {"kNewLeft", "kLeft", "kStrict", "kRight", "kNewRight"};
+    const std::size_t n = test.modules.size();
+    std::string ids;
+    for (const ModuleCall& m : test.modules) ids += std::to_string(module_id_.at(m.name)) + ",";
+    out_.at(test.at, "(({ static constexpr ::sylva::abi::ModuleId sylva_ic_ids[] = {" + ids +
+                         "}; const unsigned char* sylva_ic[" + std::to_string(n) +
+                         "]; const bool sylva_ic_ok = ::sylva::rt::in_context(sylva_call, ::sylva::abi::" +
+                         parts[test.context] + ", sylva_ic_ids, " + std::to_string(n) +
+                         ", sylva_ic); if (sylva_ic_ok) {");
+    for (std::size_t k = 0; k < n; ++k) {
+      const ModuleCall& m = test.modules[k];
+      const std::string types = join_types(module(m.name).param_types);
+      for (std::size_t j = 0; j < m.args.size(); ++j) {
+        out_.inline_text("::sylva::rt::in_context_parameter<" + std::to_string(j) + ", " + types + ">(sylva_ic[" +
+                         std::to_string(k) + "],");
+        out_.tokens_in_place(m.args[j]);
+        out_.inline_text(");");
+      }
+    }
+    out_.inline_text("} sylva_ic_ok; }))");
   }
 
   // Room for all the modules is reserved once; then each is written in turn.
@@ -288,7 +378,7 @@ class CppGenerator {
            std::to_string(rule.filter) + ", sylva_pattern_" + std::to_string(r) + ", {";
       for (const auto& part : rule.parts) t += std::to_string(part.size()) + ",";
       t += "}, &sylva_rule_" + std::to_string(r) + ", " + quoted(model_.files[rule.at.file]) + ", " +
-           std::to_string(rule.at.line) + "},\n";
+           std::to_string(rule.at.line) + ", " + std::to_string(rule.view) + "},\n";
     }
     t += "  {}\n};\n";
     if (!model_.lsystem_labels.empty()) {
@@ -296,10 +386,25 @@ class CppGenerator {
       for (int label : model_.lsystem_labels) t += std::to_string(label) + ",";
       t += "};\n";
     }
+    if (!model_.verify_string.empty()) {
+      t += "const ::sylva::abi::ModuleId sylva_verify_string[] = {";
+      for (const std::string& name : model_.verify_string) t += std::to_string(module_id_.at(name)) + ",";
+      t += "};\n";
+    }
+    if (!model_.gillespie_groups.empty()) {
+      t += "const int sylva_gillespie_groups[] = {";
+      for (int group : model_.gillespie_groups) t += std::to_string(group) + ",";
+      t += "};\n";
+    }
+    if (!model_.groups.empty()) {
+      t += "const int sylva_groups[] = {";
+      for (int group : model_.groups) t += std::to_string(group) + ",";
+      t += "};\n";
+    }
     t += "}  // namespace\n\n";
     auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
     t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";
-    t += "  static const ::sylva::abi::ModelDescriptor descriptor = {\n";
+    t += "  static ::sylva::abi::ModelDescriptor descriptor = {\n";
     t += "    ::sylva::abi::kAbiVersion, " + quoted(model_.main_file) + ",\n";
     t += "    sylva_modules, " + std::to_string(model_.modules.size()) + ", " +
          std::to_string(predefined_modules().size()) + ",\n";
@@ -320,7 +425,17 @@ class CppGenerator {
          (model_.lsystem_labels.empty() ? std::string("nullptr") : "sylva_lsystem_labels") + ", " +
          std::to_string(model_.lsystem_labels.size()) + ", " + id_or_none(model_.call_module) + ", " +
          id_or_none(model_.return_module) + ",\n";
-    t += "  };\n  return &descriptor;\n}\n";
+    t += "    " + std::string(model_.verify_string.empty() ? "nullptr" : "sylva_verify_string") + ", " +
+         (model_.has_verify_string ? std::to_string(model_.verify_string.size()) : std::string("-1")) + ",\n";
+    t += "  };\n";
+    // Fields set by name, whatever their place in the list above.
+    if (!model_.gillespie_groups.empty())
+      t += "  descriptor.gillespie_groups = sylva_gillespie_groups;\n  descriptor.gillespie_group_count = " +
+           std::to_string(model_.gillespie_groups.size()) + ";\n";
+    if (!model_.groups.empty())
+      t += "  descriptor.groups = sylva_groups;\n  descriptor.group_count = " + std::to_string(model_.groups.size()) +
+           ";\n";
+    t += "  return &descriptor;\n}\n";
     out_.block(t);
   }
 

@@ -1,5 +1,6 @@
 #include "lang/lc_parser.h"
 
+#include <algorithm>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -40,6 +41,7 @@ class LcParser {
       }
       if (depth == 0 && (tok.is_ident("produce") || tok.is_ident("nproduce")))
         fail(tok, "'" + tok.text + "' outside a production body");
+      if (in_context_test_ahead()) fail(tok, in_context_misplaced(tok));
       if (is_open(tok)) ++depth;
       if (is_close(tok)) --depth;
       if (depth < 0) fail(tok, "unmatched '" + tok.text + "'");
@@ -132,21 +134,32 @@ class LcParser {
     if (w == "ring" && peek(1).is_ident("L") && peek(2).is_punct("-") && peek(3).is_ident("system") &&
         followed_by_colon(4))
       return parse_setting(Setting::kRing, 5), true;
-    if (w == "group" && peek(1).kind == TokenKind::Number && followed_by_colon(2)) {
-      flush_code();
-      group_ = std::stoi(peek(1).text, nullptr, 0);
-      i_ += 3;
-      return true;
-    }
+    if (w == "group" && peek(1).kind == TokenKind::Number && followed_by_colon(2)) return open_group(false), true;
     if (w == "endgroup") {
       flush_code();
       ++i_;
       if (peek().is_punct(";")) ++i_;
       group_ = 0;
+      gillespie_ = false;
+      view_ = 0;
       return true;
     }
-    if ((w == "ggroup" || w == "vgroup") && peek(1).kind == TokenKind::Number)
-      fail(tok, "'" + w + "' is not supported yet");
+    if (w == "vgroup" && peek(1).kind == TokenKind::Number && followed_by_colon(2)) {
+      // Interpretation rules of one view (7.3); the view names of the view
+      // file's window: commands are defined as numbers.
+      flush_code();
+      view_ = std::stoi(peek(1).text, nullptr, 0);
+      i_ += 3;
+      return true;
+    }
+    if (w == "vgroup") fail(peek(1), "expected a view (a number, or a name from a window: command of the view file) and ':' after 'vgroup'");
+    if (w == "VerifyString" && followed_by_colon(1)) return parse_verify_string(), true;
+    if (w == "ggroup" && peek(1).kind == TokenKind::Number) {
+      if (!followed_by_colon(2)) fail(peek(2), "expected ':' after 'ggroup " + peek(1).text + "'");
+      return open_group(true), true;
+    }
+    if (w == "ggroup" && followed_by_colon(2))
+      fail(peek(1), "expected a group number after 'ggroup', found " + describe(peek(1)));
     if (followed_by_colon(1) && peek(2).is_punct("{")) {
       if (w == "Start") return parse_control(ControlStatement::kStart), true;
       if (w == "StartEach") return parse_control(ControlStatement::kStartEach), true;
@@ -156,6 +169,30 @@ class LcParser {
     if (find_module(w)) return parse_rule(), true;
     if (looks_like_rule()) require_module(tok);  // reports the undeclared module
     return false;
+  }
+
+  // `group N:` or `ggroup N:`; both kinds share one numbering (LPFG manual 7.2).
+  void open_group(bool gillespie) {
+    flush_code();
+    const Token& number = peek(1);
+    const int group = std::stoi(number.text, nullptr, 0);
+    const std::string name = std::to_string(group);
+    if (gillespie && group == 0) fail(number, "group 0 is the main group and cannot be a Gillespie group");
+    if (gillespie && regular_groups_.count(group))
+      fail(number, "group " + name + " is already a regular group ('group " + name +
+                       ":'); a Gillespie group needs a number of its own");
+    if (!gillespie && gillespie_groups_.count(group))
+      fail(number, "group " + name + " is already a Gillespie group ('ggroup " + name +
+                       ":'); a regular group needs a number of its own");
+    (gillespie ? gillespie_groups_ : regular_groups_).insert(group);
+    if (gillespie && std::find(model_.gillespie_groups.begin(), model_.gillespie_groups.end(), group) ==
+                         model_.gillespie_groups.end())
+      model_.gillespie_groups.push_back(group);
+    if (std::find(model_.groups.begin(), model_.groups.end(), group) == model_.groups.end())
+      model_.groups.push_back(group);
+    group_ = group;
+    gillespie_ = gillespie;
+    i_ += 3;
   }
 
   // `Name(...) ... : {` with only pattern tokens before the colon: a rule whose
@@ -257,6 +294,31 @@ class LcParser {
     }
   }
 
+  // VerifyString: A B [ C ]; (LPFG manual 10.4): module names; parameters
+  // may be written but are not compared.
+  void parse_verify_string() {
+    flush_code();
+    next();  // VerifyString
+    next();  // :
+    model_.has_verify_string = true;
+    while (!peek().is_punct(";")) {
+      const Token& tok = peek();
+      if (tok.is_punct("[") || tok.is_punct("]")) {
+        model_.verify_string.push_back(tok.is_punct("[") ? "SB" : "EB");
+        next();
+        continue;
+      }
+      if (!tok.is_ident()) fail(tok, "expected a module name or ';' in 'VerifyString:', found " + describe(tok));
+      model_.verify_string.push_back(require_module(tok).name);
+      next();
+      if (peek().is_punct("(")) {
+        next();
+        parse_arguments();
+      }
+    }
+    next();  // ;
+  }
+
   void parse_axiom() {
     flush_code();
     Axiom axiom;
@@ -315,6 +377,56 @@ class LcParser {
     return calls;
   }
 
+  // ---- in-body context tests (LPFG manual 3.3) --------------------------------
+  bool in_context_test_ahead() const {
+    const Token& tok = peek();
+    return (tok.is_ident("InLeftContext") || tok.is_ident("InRightContext") || tok.is_ident("InNewLeftContext") ||
+            tok.is_ident("InNewRightContext")) &&
+           peek(1).is_punct("(");
+  }
+  static std::string in_context_misplaced(const Token& tok) {
+    return "'" + tok.text + "' tests the context of a rule's predecessor: it is only allowed in the body of a "
+           "production, decomposition or interpretation rule";
+  }
+
+  // `InLeftContext ( A(x) [ B(y, z) )`: modules as in a predecessor, each
+  // parameter a variable of the body to receive it.
+  BodyPart parse_in_context() {
+    BodyPart test;
+    test.kind = BodyPart::kInContext;
+    test.at = next();
+    const std::string& w = test.at.text;
+    test.context = w == "InLeftContext"    ? abi::kLeft
+                   : w == "InRightContext" ? abi::kRight
+                   : w == "InNewLeftContext" ? abi::kNewLeft
+                                             : abi::kNewRight;
+    next();  // (
+    while (!peek().is_punct(")")) {
+      const Token& tok = peek();
+      ModuleCall m;
+      m.at = tok;
+      if (tok.is_punct("[") || tok.is_punct("]")) {
+        m.name = tok.is_punct("[") ? "SB" : "EB";
+        next();
+        test.modules.push_back(std::move(m));
+        continue;
+      }
+      if (!tok.is_ident()) fail(tok, "expected a module or ')' in " + w + "(...), found " + describe(tok));
+      const ModuleDecl& decl = require_module(tok);
+      m.name = next().text;
+      if (peek().is_punct("(")) {
+        next();
+        m.args = parse_arguments();
+      }
+      if (m.args.size() != decl.param_types.size())
+        fail(m.at, arity_message(decl, m.args.size(), std::string(w + " names").c_str()));
+      test.modules.push_back(std::move(m));
+    }
+    if (test.modules.empty()) fail(peek(), "expected the modules to look for in " + w + "(...)");
+    next();  // )
+    return test;
+  }
+
   static std::string arity_message(const ModuleDecl& decl, std::size_t given, const char* verb) {
     return "module '" + decl.name + "' has " + std::to_string(decl.param_types.size()) + " parameter" +
            (decl.param_types.size() == 1 ? "" : "s") + " but " + verb + " " + std::to_string(given);
@@ -346,7 +458,9 @@ class LcParser {
 
   // ---- bodies -----------------------------------------------------------------
   // From '{' to its matching '}', cutting produce statements out.
-  Body parse_body(bool produce_allowed) {
+  // `gillespie`: a production of a Gillespie group, whose body offers
+  // reactions (`propensity p produce ...;`) instead of producing.
+  Body parse_body(bool produce_allowed, bool gillespie = false) {
     Body body;
     BodyPart code;
     code.kind = BodyPart::kCode;
@@ -357,8 +471,25 @@ class LcParser {
       const Token& tok = peek();
       if (tok.kind == TokenKind::End)
         fail(opening, "expected '}' to end the body that begins here, found end of file");
+      if (tok.is_ident("propensity") && (gillespie || propensity_statement_ahead())) {
+        if (!gillespie) fail(tok, "'propensity' is only allowed in the productions of a Gillespie group ('ggroup N:')");
+        if (!code.code.empty()) body.push_back(std::move(code));
+        code = BodyPart{};
+        body.push_back(parse_propensity());
+        continue;
+      }
+      if (in_context_test_ahead()) {
+        if (!produce_allowed) fail(tok, in_context_misplaced(tok));
+        if (!code.code.empty()) body.push_back(std::move(code));
+        code = BodyPart{};
+        body.push_back(parse_in_context());
+        continue;
+      }
       if (tok.is_ident("produce") || tok.is_ident("nproduce")) {
         if (!produce_allowed) fail(tok, "'" + tok.text + "' is only allowed in a production or rule body");
+        if (gillespie && tok.is_ident("produce"))
+          fail(tok, "a production of a Gillespie group produces through its reactions: write "
+                    "'propensity <expression> produce ...;'");
         if (!code.code.empty()) body.push_back(std::move(code));
         code = BodyPart{};
         BodyPart produce;
@@ -376,12 +507,48 @@ class LcParser {
     return body;
   }
 
+  // `propensity <expression> produce <modules>;` (LPFG manual 7.2).
+  BodyPart parse_propensity() {
+    BodyPart part;
+    part.kind = BodyPart::kPropensity;
+    part.at = next();  // propensity
+    int depth = 0;
+    while (depth > 0 || !peek().is_ident("produce")) {
+      const Token& tok = peek();
+      if (tok.kind == TokenKind::End || tok.kind == TokenKind::Verbatim ||
+          (depth == 0 && (tok.is_punct(";") || is_close(tok))))
+        fail(tok, "expected 'produce' after the propensity, found " + describe(tok));
+      if (is_open(tok)) ++depth;
+      if (is_close(tok)) --depth;
+      part.code.push_back(next());
+    }
+    if (part.code.empty()) fail(peek(), "expected an expression after 'propensity'");
+    next();  // produce
+    part.modules = parse_module_calls("a produce statement");
+    return part;
+  }
+
+  // Whether the `propensity` here begins a propensity statement (a
+  // `produce` before the end of the statement) rather than naming a variable.
+  bool propensity_statement_ahead() const {
+    int depth = 0;
+    for (std::size_t k = 1;; ++k) {
+      const Token& t = peek(k);
+      if (t.kind == TokenKind::End || t.kind == TokenKind::Verbatim) return false;
+      if (depth == 0 && t.is_ident("produce")) return true;
+      if (depth == 0 && (t.is_punct(";") || is_close(t))) return false;
+      if (is_open(t)) ++depth;
+      if (is_close(t)) --depth;
+    }
+  }
+
   // ---- rules ------------------------------------------------------------------
   void parse_rule() {
     flush_code();
     Rule rule;
     rule.kind = block_;
     rule.group = group_;
+    rule.view = view_;
     rule.filter = filter_;
     rule.at = peek();
 
@@ -401,6 +568,10 @@ class LcParser {
     if (segments.back().empty()) fail(peek(), "expected a module before ':'");
     next();  // :
 
+    const bool gillespie = gillespie_ && block_ == RuleKind::Production;
+    for (const Token& op : operators)
+      if (gillespie && (op.text == "<<" || op.text == ">>"))
+        fail(op, "new context " + describe(op) + " cannot be used in a Gillespie group (LPFG manual 7.2)");
     std::size_t strict = 0;
     while (strict < operators.size() && (operators[strict].text == "<" || operators[strict].text == "<<")) ++strict;
     auto assign = [&](abi::PatternPart part, std::size_t segment, const Token& op) {
@@ -426,7 +597,7 @@ class LcParser {
           if (!bound.insert(m.formals[f]).second)
             fail(m.at, "parameter name '" + m.formals[f] + "' is bound twice in the predecessor");
 
-    rule.body = parse_body(true);
+    rule.body = parse_body(true, gillespie);
     if (peek().is_punct(";")) next();
     model_.items.emplace_back(std::move(rule));
   }
@@ -549,6 +720,9 @@ class LcParser {
   std::unordered_map<std::string, int> module_index_;
   RuleKind block_ = RuleKind::Production;
   int group_ = 0;
+  bool gillespie_ = false;  // group_ is a Gillespie group
+  std::unordered_set<int> regular_groups_{0}, gillespie_groups_;
+  int view_ = 0;
   int filter_ = -1;
 };
 

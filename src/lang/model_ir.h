@@ -44,16 +44,23 @@ struct PatternModule {
 
 // A body is C++ with produce statements cut out of it.
 struct BodyPart {
-  enum Kind { kCode, kProduce, kNProduce } kind = kCode;
-  Code code;                        // kCode
-  std::vector<ModuleCall> modules;  // kProduce, kNProduce
+  // kPropensity: `propensity <code> produce <modules>;`, a reaction offered
+  // by a production of a Gillespie group.
+  // kInContext: `InLeftContext(A(x) B(y))` and its kin (LPFG manual 3.3),
+  // an expression testing context; `modules` is the pattern, each argument
+  // the variable its parameter is copied into.
+  enum Kind { kCode, kProduce, kNProduce, kPropensity, kInContext } kind = kCode;
+  Code code;                        // kCode; kPropensity: the propensity
+  std::vector<ModuleCall> modules;  // kProduce, kNProduce, kPropensity, kInContext
   Token at;
+  abi::PatternPart context = abi::kLeft;  // kInContext: which context it tests
 };
 using Body = std::vector<BodyPart>;
 
 struct Rule {
   abi::RuleKind kind = abi::RuleKind::Production;
   int group = 0;
+  int view = 0;  // vgroup (LPFG manual 7.3)
   int filter = -1;
   std::array<std::vector<PatternModule>, abi::kPatternParts> parts;
   Body body;
@@ -112,6 +119,14 @@ struct Model {
   int main_lsystem = 0;
   std::vector<int> lsystem_labels;
   std::string call_module, return_module;  // empty: the model has none
+  // VerifyString: (LPFG manual 10.4): the module names the derived string
+  // must have.
+  bool has_verify_string = false;
+  std::vector<std::string> verify_string;
+  // The numbers of the Gillespie groups (ggroup N:, LPFG manual 7.2).
+  std::vector<int> gillespie_groups;
+  // The numbers of every group the model defines (group N: and ggroup N:).
+  std::vector<int> groups;
 };
 
 // The predefined modules of lpfgall.h, in id order.

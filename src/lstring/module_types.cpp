@@ -15,8 +15,11 @@ ModuleTypes ModuleTypes::from_model(const abi::ModelDescriptor& model) {
   std::vector<Type> types;
   for (std::uint32_t k = 0; k < model.module_count; ++k) {
     auto format = model.modules[k].format_params;
-    if (!format && k < model.predefined_count && k < predefined_count) format = predefined[k].format_params;
-    types.push_back(Type{model.modules[k].name, model.modules[k].param_size, format});
+    auto parse = model.modules[k].parse_params;
+    const bool engine_supplies = k < model.predefined_count && k < predefined_count;
+    if (!format && engine_supplies) format = predefined[k].format_params;
+    if (!parse && engine_supplies && !(model.flags & abi::kModelCpfg)) parse = predefined[k].parse_params;
+    types.push_back(Type{model.modules[k].name, model.modules[k].param_size, format, model.modules[k].param_count, parse});
   }
   ModuleTypes result(std::move(types));
   result.set_cpfg((model.flags & abi::kModelCpfg) != 0);

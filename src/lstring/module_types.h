@@ -21,6 +21,9 @@ class ModuleTypes {
     std::string name;
     std::uint32_t param_size = 0;
     void (*format_params)(const unsigned char*, abi::TextSink*) = nullptr;
+    // Reading the parameters back (null: they cannot be; cpfg's modules).
+    std::uint32_t param_count = 0;
+    bool (*parse_params)(abi::TextSource*, unsigned char*) = nullptr;
   };
 
   ModuleTypes() = default;

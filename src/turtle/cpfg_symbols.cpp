@@ -31,7 +31,7 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"@o", O::CircleScreen}, {"@c", O::CircleHL}, {"@bo", O::CircleScreenBoundary}, {"@bc", O::CircleHLBoundary},
       {"@O", O::Sphere},
       {"@Gs", O::CylinderStart}, {"@Gc", O::CylinderPoint}, {"@Ge", O::CylinderEnd},
-      {"@Gt", O::CylinderTangents},
+      {"@Gt", O::CylinderTangents}, {"@Gr", O::CylinderRadiusTangents},
       {"@#", O::Contour}, {"@!", O::ContourSides},
       {"@D", O::SetScale}, {"@Di", O::ScaleUp}, {"@Dd", O::ScaleDown},
       {"@Tx", O::Texture},
@@ -337,6 +337,22 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       }
       state_.cylinder_tangent_start = param(p, 0);
       state_.cylinder_tangent_end = n > 1 ? param(p, 1) : param(p, 0);
+      break;
+    case O::CylinderRadiusTangents:
+      // @Gr(angle1,length1,angle2,length2): the radius's Hermite tangents
+      // for the stretches ended by the next control points; @Gr(flag): the
+      // adjustment to the stretch's length on or off.
+      if (n >= 4) {
+        state_.radius_tangents.given = true;
+        state_.radius_tangents.angle1 = param(p, 0);
+        state_.radius_tangents.length1 = param(p, 1);
+        state_.radius_tangents.angle2 = param(p, 2);
+        state_.radius_tangents.length2 = param(p, 3);
+      } else if (n >= 1) {
+        state_.radius_tangents.adjust = param(p, 0) != 0;
+      } else {
+        note(" ignored: needs tangents or a flag");
+      }
       break;
     case O::Contour: {
       const int c = n > 0 ? int_param(p, 0) : 0;

@@ -31,6 +31,7 @@ enum class CpfgOp : std::uint8_t {
   Sphere,                                                               // @O
   CylinderStart, CylinderPoint, CylinderEnd,                            // @Gs @Gc @Ge
   CylinderTangents,                                                     // @Gt
+  CylinderRadiusTangents,                                               // @Gr
   Contour, ContourSides,                                                // @# @!
   SetScale, ScaleUp, ScaleDown,                                         // @D @Di @Dd
   Texture,                                                              // @Tx

@@ -11,8 +11,9 @@
 // whose manual describes no interpolation) has `strips - 1` rings inside at
 // t = k / strips: their frames are the first control point's carried along
 // the curve by parallel transport, with the roll between the two control
-// frames spread evenly; their radius, contour scale and contour go linearly
-// from one control point to the next. One strip is today's straight band.
+// frames spread evenly; their contour scale and contour go linearly from one
+// control point to the next, and so does their radius unless @Gr shaped it
+// (geometry/radius_profile.h). One strip is a straight band.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -72,10 +73,12 @@ TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point(in
   p.scale_left = state_.contour_scale_left;
   p.scale_up = state_.contour_scale_up;
   p.color = state_.color;
+  p.back_color = state_.back_color;
   p.from = from_;
   p.strips = std::max(1, strips);
   p.tangent_start = state_.cylinder_tangent_start;
   p.tangent_end = state_.cylinder_tangent_end;
+  p.radius_tangents = state_.radius_tangents;
   return p;
 }
 
@@ -307,7 +310,7 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
         Frame f = frames[static_cast<std::size_t>(j)];
         f.rotate(f.heading, std::cos(roll * t), std::sin(roll * t));
         for (std::size_t i = 0; i < n_sides; ++i) ring_between_[i] = ring_from_[i] * (1 - t) + ring_to_[i] * t;
-        const float radius = radius_a * (1 - t) + radius_b * t;
+        const float radius = geometry::stretch_radius(b.radius_tangents, radius_a, radius_b, distance, t);
         const float scale_left = a.scale_left * (1 - t) + b.scale_left * t;
         const float scale_up = a.scale_up * (1 - t) + b.scale_up * t;
         geometry::place_ring(ring_between_.data(), sides, curve_at(t), f.heading, f.left, f.up, radius * scale_left,
@@ -329,6 +332,7 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
     }
     g.index_count = static_cast<std::uint32_t>(scene_->indices.size()) - g.first_index;
     g.color = b.color;
+    g.back_color = b.back_color;
     g.from = b.from;
     scene_->groups.push_back(g);
     from = to;

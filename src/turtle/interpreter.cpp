@@ -482,6 +482,11 @@ void TurtleInterpreter::visit(ModuleId id, unsigned char* params, std::uint32_t 
 
 void TurtleInterpreter::finish() { impl_->finish(); }
 
+TurtleInterpreter::Pose TurtleInterpreter::pose() const {
+  const TurtleState& s = impl_->state_;
+  return Pose{s.position, s.frame.heading, s.frame.left, s.frame.up, s.width, s.scale};
+}
+
 geometry::Scene interpret_scene(derive::Derivation& derivation, const TurtleSettings& settings, std::string* trace) {
   geometry::Scene scene;
   TurtleInterpreter turtle(settings, derivation.types(), &scene, trace);

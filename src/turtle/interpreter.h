@@ -23,6 +23,15 @@ class TurtleInterpreter : public derive::InterpretedModuleVisitor {
   // Closes what the string left open (polygons, generalized cylinders).
   void finish();
 
+  // The turtle between two visits: what an environmental program is told
+  // about a communication module (E1, ?E ...) just visited.
+  struct Pose {
+    geometry::Vec3 position, heading, left, up;
+    float width = 1;
+    float scale = 1;  // cpfg's turtle scale; 1 for L+C
+  };
+  Pose pose() const;
+
   TurtleInterpreter(const TurtleInterpreter&) = delete;
   TurtleInterpreter& operator=(const TurtleInterpreter&) = delete;
 

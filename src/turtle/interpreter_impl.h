@@ -143,12 +143,13 @@ struct TurtleInterpreter::Impl {
     int contour = 0, blend_contour = 0;
     float blend = 0;
     float scale_left = 1, scale_up = 1;
-    int color = 1;
+    int color = 1, back_color = -1;
     Provenance from;
     // The stretch from the previous control point to this one: its bands
     // (rings at the Hermite parameters k / strips) and tangent coefficients.
     int strips = 1;
     float tangent_start = 1.2f, tangent_end = 1.2f;
+    geometry::RadiusTangents radius_tangents;
   };
   struct Cylinder {
     std::vector<CylinderPoint> points;

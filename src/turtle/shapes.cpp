@@ -57,6 +57,7 @@ void TurtleInterpreter::Impl::end_group(TriangleGroup::Kind kind) {
   g.first_index = static_cast<std::uint32_t>(group_first_index_);
   g.index_count = static_cast<std::uint32_t>(scene_->indices.size() - group_first_index_);
   g.color = state_.color;
+  g.back_color = state_.back_color;
   g.from = from_;
   if (g.index_count > 0) scene_->groups.push_back(g);
   if (trace_) *trace_ += ", " + std::to_string(g.index_count / 3) + " triangles";

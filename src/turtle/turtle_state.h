@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "geometry/radius_profile.h"
 #include "turtle/frame.h"
 
 namespace sylva::turtle {
@@ -17,8 +18,8 @@ struct TurtleState {
   // cpfg's turtle scale (@D, @Di, @Dd): multiplies a cpfg model's steps and
   // circle and sphere sizes.
   float scale = 1;
-  // cpfg's @; @,: the back side's colour index (-1: as the front). The Scene
-  // has one colour per primitive, so outputs draw both sides in the front's.
+  // cpfg's @; @,: the back side's colour index (-1: as the front), given to
+  // the triangles of surfaces, polygons and cylinders.
   int back_color = -1;
   // The heading and up of the last step (F f G g ...), which cpfg's @Tp
   // carries to the current heading without twist.
@@ -38,6 +39,8 @@ struct TurtleState {
   // cpfg's @Gt(start,end): the Hermite tangent coefficients of the next
   // stretch of a cylinder (CPFG manual 6.7.3).
   float cylinder_tangent_start = 1.2f, cylinder_tangent_end = 1.2f;
+  // cpfg's @Gr: how the radius goes along the next stretches.
+  geometry::RadiusTangents radius_tangents;
   int cylinder = -1;             // index of the open cylinder, -1: none
   std::uint32_t cylinder_serial = 0;  // tells a reused cylinder slot from the one this state knew
 

@@ -298,7 +298,7 @@ TEST(InputFilesTest, UnknownExtensionsAndSecondViewFilesAreErrors) {
   std::string dir = test::make_temp_dir("inputs-bad");
   std::string txt = write_file(dir, "notes.txt", "hello\n");
   EXPECT_EQ(error_of([&] { io::read_input_files({txt}); }),
-            txt + ": error: unknown kind of input file (.txt): expected .v, .a, .map, .mat, .con, .cset, .func or .fset");
+            txt + ": error: unknown kind of input file (.txt): expected .v, .a, .map, .mat, .con, .cset, .func, .fset or .vset");
   std::string a = write_file(dir, "a.v", "\n"), b = write_file(dir, "b.v", "\n");
   EXPECT_EQ(error_of([&] { io::read_input_files({a, b}); }),
             b + ": error: a second view file (" + a + " is one already); lpfg takes one");

@@ -131,6 +131,36 @@ TEST(CpfgCylinder, RadiusInterpolatedLinearly) {
   for (int k = 0; k < 5; ++k) EXPECT_NEAR(ring_radius(s, k, 6), 1 + 0.5f * static_cast<float>(k), 1e-5) << k;
 }
 
+// @Gr(angle1,length1,angle2,length2): the radius is the Hermite curve from
+// (0, r0) to (X, r1) with tangents length (cos angle, sin angle), taken where
+// its first coordinate is t X; X = 1 (adjusted, the default) or, after
+// @Gr(0), the stretch's length. With r0 = r1 = 1/2:
+// (a) angles 30 and -30, lengths 1: symmetric, so the middle is at u = 1/2:
+//     1/2 + (1/8) sin 30 + (1/8) sin 30 = 0.625.
+// (b) tangents (1, 1) and (1, -1) (45 degrees, length sqrt 2) on X = 1: the
+//     first coordinate is u itself, so at t = 1/4 the radius is
+//     1/2 + 0.140625 x 1 + 0.046875 x 1 = 0.6875, at t = 1/2 0.75.
+// (c) @Gr(0) on a stretch of length 2 with tangents (2, 2) and (2, -2): the
+//     first coordinate is 2u, so at t = 1/4: 1/2 + 0.140625 x 2 + 0.046875 x 2
+//     = 0.875, at t = 1/2: 1/2 + 0.125 x 2 + 0.125 x 2 = 1.
+TEST(CpfgCylinder, RadiusTangentsShapeTheRadius) {
+  Scene a = draw_cpfg_cylinder("gr-thirty", "@!(8)#(1)@Gs @Gr(30,1,-30,1) F(2) @Ge(2)");
+  ASSERT_EQ(a.positions.size(), 8u * 3);
+  EXPECT_NEAR(ring_radius(a, 0, 8), 0.5, 1e-5);
+  EXPECT_NEAR(ring_radius(a, 1, 8), 0.625, 1e-5);
+  EXPECT_NEAR(ring_radius(a, 2, 8), 0.5, 1e-5);
+
+  Scene b = draw_cpfg_cylinder("gr-unit", "@!(8)#(1)@Gs @Gr(45,1.41421356,-45,1.41421356) F(2) @Ge(4)");
+  ASSERT_EQ(b.positions.size(), 8u * 5);
+  const float expected_b[] = {0.5f, 0.6875f, 0.75f, 0.6875f, 0.5f};
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(ring_radius(b, k, 8), expected_b[k], 1e-5) << k;
+
+  Scene c = draw_cpfg_cylinder("gr-real", "@!(8)#(1)@Gr(0)@Gs @Gr(45,2.82842712,-45,2.82842712) F(2) @Ge(4)");
+  ASSERT_EQ(c.positions.size(), 8u * 5);
+  const float expected_c[] = {0.5f, 0.875f, 1, 0.875f, 0.5f};
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(ring_radius(c, k, 8), expected_c[k], 1e-5) << k;
+}
+
 // A roll of 90 degrees about the straight axis between the control points:
 // the inner rings turn by a quarter, half and three quarters of it, so the
 // middle ring's first point is 45 degrees from both end rings' first points.

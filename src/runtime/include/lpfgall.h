@@ -9,3 +9,4 @@
 #include <sylva/runtime/types.h>
 #include <sylva/runtime/modules.h>
 #include <sylva/runtime/functions.h>
+#include <sylva/runtime/in_context.h>

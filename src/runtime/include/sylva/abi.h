@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 3;
+inline constexpr std::uint32_t kAbiVersion = 7;
 
 using ModuleId = std::uint16_t;
 
@@ -48,11 +48,24 @@ struct TextSink {
   void write(const char* text) { append(self, text, std::strlen(text)); }
 };
 
+// Text being read back into parameters (a saved string). The text ends with
+// a NUL at or after `end`, so number parsers may stop on their own.
+struct TextSource {
+  const char* at;   // advanced past what was read; on failure, where it went wrong
+  const char* end;
+  const char* expected = nullptr;  // on failure: what was expected there
+};
+
 struct ModuleType {
   const char* name;
   std::uint32_t param_size;
   // Appends the parameters as "p1,p2,..." (no parentheses).
   void (*format_params)(const unsigned char* params, TextSink* out);
+  // Added in ABI version 4: reading back what format_params wrote. Reads
+  // `param_count` values separated by commas into `params` and stops before
+  // the closing parenthesis; false (with `in->expected` set) on bad text.
+  std::uint32_t param_count;
+  bool (*parse_params)(TextSource* in, unsigned char* params);
 };
 
 enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2 };
@@ -64,6 +77,20 @@ enum PatternPart : int { kNewLeft = 0, kLeft, kStrict, kRight, kNewRight, kPatte
 struct RuleCall {
   ModuleBuffer* out;   // the successor is appended here
   bool produced;       // set by `produce`
+  // Added in ABI version 5: in a step using a Gillespie group (LPFG manual
+  // 7.2) a body offers reactions instead of producing. `propensity p produce
+  // S;` appends S to `out`, calls propose, and removes S again; the engine
+  // takes as the reaction's successor what `out` held since the body began
+  // (nproduce'd modules, then S). Null outside such a step.
+  void* reactions = nullptr;
+  void (*propose)(RuleCall* call, double propensity) = nullptr;
+  // Added in ABI version 7: InLeftContext(...) and its kin (LPFG manual 3.3)
+  // ask here whether the n modules of `pattern` (a PatternPart: kLeft,
+  // kRight, kNewLeft or kNewRight) follow in the context; on success
+  // params[k] points at the parameters of the module matched by pattern[k].
+  // Null: every test is false.
+  void* context = nullptr;
+  bool (*in_context)(void* context, int part, const ModuleId* pattern, int n, const unsigned char** params) = nullptr;
 };
 
 struct Rule {
@@ -76,6 +103,9 @@ struct Rule {
   void (*body)(RuleCall* call, const unsigned char* const* params);
   const char* file;
   int line;
+  // Added in ABI version 4: the vgroup (LPFG manual 7.3) of an interpretation
+  // rule; 0 outside any vgroup. Drawing view v uses vgroup v, then vgroup 0.
+  int view;
 };
 
 // An ignore: or consider: statement in force for some rules.
@@ -102,6 +132,31 @@ struct ControlState {
   // arguments and results. Null when the model runs without input files.
   void* inputs = nullptr;
   bool (*input_query)(void* inputs, int query, int id, const double* in, double* out) = nullptr;
+  // Added in ABI version 4: what a model asks the engine to do (a
+  // ModelRequest) with a view number or a file name; null: nothing is done.
+  void* requests = nullptr;
+  void (*request)(void* requests, int request, int value, const char* file) = nullptr;
+  // Added in ABI version 5: Gillespie groups. The state of their own random
+  // generator (SplitMix64; SeedGillespie sets it, ran() does not touch it)
+  // and the time τ to the reaction of the last Gillespie step (GillespieTime).
+  std::uint64_t gillespie_random = 0;
+  double gillespie_time = 0;
+  // Added in ABI version 6: Environment() / NoEnvironment() (LPFG manual
+  // 6.1.3): whether the environmental pass follows the current step.
+  bool environment = true;
+  // Added in ABI version 7: where the UseGroup call that set next_group is
+  // (the model's file and line), so a group the model lacks can be reported there.
+  const char* group_call_file = nullptr;
+  int group_call_line = 0;
+};
+
+// What ControlState::request is asked (LPFG manual 6.1, 6.4, 6.6).
+enum ModelRequest : int {
+  kRequestOutputString = 0,  // file: write the current string now
+  kRequestLoadString,        // file: replace the current string now
+  kRequestOutputFrame,       // file: write an image at the end of the step
+  kRequestDisplayFrame,      // an animation frame of the current step
+  kRequestUseView,           // value: a view to draw
 };
 
 // What ControlState::input_query is asked.
@@ -112,6 +167,12 @@ enum InputQuery : int {
   kQueryCurveNormal,        // in: s                  out: x, y, z
   kQuerySurfacePatch,       // in: -                  out: 48 numbers (16 control points)
   kQueryCurveLength,        // in: -                  out: length
+  // Changing a curve (LPFG manual 6.2.3); the turtle draws the changed curve.
+  kQueryCurveScale,         // in: x, y, z            out: -
+  kQueryCurveSetPoint,      // in: p, x, y, z         out: -
+  kQueryCurveRecalculate,   // in: -                  out: -
+  kQueryCurveReset,         // in: -                  out: -
+  kQueryParameter,          // in: -                  out: value (val, LPFG manual 6.2.1)
 };
 
 struct ModelDescriptor {
@@ -149,6 +210,18 @@ struct ModelDescriptor {
   std::uint32_t lsystem_count;
   ModuleId call_module;          // ?(label,s); kNoModule if the model has none
   ModuleId return_module;        // $ without parameters; kNoModule if none
+  // Added in ABI version 4: VerifyString: (LPFG manual 10.4), the module
+  // names the derived string must have; verify_length is -1 without one.
+  const ModuleId* verify_string;
+  std::int32_t verify_length;
+  // Added in ABI version 5: the numbers of the Gillespie groups (ggroup N:,
+  // LPFG manual 7.2); a step whose group is one of them fires one reaction.
+  const int* gillespie_groups;
+  std::uint32_t gillespie_group_count;
+  // Added in ABI version 7: the numbers of the groups the model defines
+  // (group N:, ggroup N:; 0 always exists), which UseGroup may select.
+  const int* groups;
+  std::uint32_t group_count;
 };
 
 inline constexpr ModuleId kNoModule = 0xFFFF;

@@ -13,6 +13,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <source_location>
 
 namespace sylva::rt {
 // One per compiled model: models are built with hidden visibility, so two
@@ -22,6 +23,11 @@ inline abi::ControlState control;
 inline void message(const char* text) {
   if (control.message) control.message(control.host, text);
   else std::fputs(text, stderr);
+}
+
+// Passes a request to the engine; without one (a model loaded by hand) it is ignored.
+inline void request(int what, int value, const char* file) {
+  if (control.request) control.request(control.requests, what, value, file);
 }
 }  // namespace sylva::rt
 
@@ -33,18 +39,31 @@ inline int StepNo() { return sylva::rt::control.step; }
 inline void Stop() { sylva::rt::control.stop_requested = true; }
 inline void RunSimulation() {}
 inline void PauseSimulation() {}
-inline void DisplayFrame() {}
-inline void OutputFrame(const char*) {}
+// The engine draws the frame: with --frames and "display on request: on"
+// in the animation file, as one more frame of the animation.
+inline void DisplayFrame() { sylva::rt::request(sylva::abi::kRequestDisplayFrame, 0, nullptr); }
+// An image (or mesh, drawing) of the string at the end of the current step,
+// in the format the file's extension names; none if Stop() is called too.
+inline void OutputFrame(const char* file) { sylva::rt::request(sylva::abi::kRequestOutputFrame, 0, file); }
 
-inline void UseGroup(int group) { sylva::rt::control.next_group = group; }
+// The call's place in the model (line markers make it the .l file's) goes
+// with the group, so a group the model does not define is reported there.
+inline void UseGroup(int group, std::source_location call = std::source_location::current()) {
+  sylva::rt::control.next_group = group;
+  sylva::rt::control.group_call_file = call.file_name();
+  sylva::rt::control.group_call_line = static_cast<int>(call.line());
+}
 inline int CurrentGroup() { return sylva::rt::control.current_group; }
 
 inline void Forward() { sylva::rt::control.forward = true; }
 inline void Backward() { sylva::rt::control.forward = false; }
 inline bool IsForward() { return sylva::rt::control.forward; }
 
-inline void Environment() {}
-inline void NoEnvironment() {}
+// Whether the environmental pass (the interpretation for the environment,
+// after EndEach) follows the current step; it stays so until changed. The
+// same in StartEach or EndEach.
+inline void Environment() { sylva::rt::control.environment = true; }
+inline void NoEnvironment() { sylva::rt::control.environment = false; }
 
 // ---- Functions, curves and surfaces from input files (6.2) -----------------
 
@@ -108,6 +127,31 @@ inline float curveLength(int id) {
 inline V3f curveNormal(int id, float s) {
   return V3f(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurveNormal, "curveNormal"));
 }
+// Changing curve `id` for the rest of the run: the curve functions and the
+// generalized cylinders drawn with it see the change. A point set with
+// curveSetPoint (control points counted from 0 as listed in the file) reaches
+// the curve functions after curveRecalculate, as in lpfg.
+inline void curveScale(int id, float x, float y, float z) {
+  double in[3] = {x, y, z};
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveScale, id, in, nullptr, "curveScale");
+}
+inline void curveSetPoint(int id, int p, float x, float y, float z) {
+  double in[4] = {static_cast<double>(p), x, y, z};
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveSetPoint, id, in, nullptr, "curveSetPoint");
+}
+inline void curveRecalculate(int id) {
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveRecalculate, id, nullptr, nullptr, "curveRecalculate");
+}
+inline void curveReset(int id) {
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveReset, id, nullptr, nullptr, "curveReset");
+}
+
+// Parameter `id` of the .vset file (6.2.1): its name is #defined to its id.
+inline float val(int id) {
+  double out[1] = {0};
+  sylva::rt::ask_inputs(sylva::abi::kQueryParameter, id, nullptr, out, "val");
+  return static_cast<float>(out[0]);
+}
 
 // ---- Random numbers (6.3.2): drand48's generator, so seeded runs match lpfg.
 
@@ -124,6 +168,13 @@ inline void sran(long seed) {
   sylva::rt::control.rand48 = ((static_cast<std::uint64_t>(seed) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
 }
 
+// ---- Gillespie groups (6.1.2, 7.2): their own generator, apart from ran().
+// The engine draws from it (SplitMix64); a seed gives the same run each time.
+inline void SeedGillespie(long seed) { sylva::rt::control.gillespie_random = static_cast<std::uint64_t>(seed); }
+// τ, the time to the reaction fired by the last Gillespie step (infinite when
+// no reaction could fire); 0 before the first.
+inline float GillespieTime() { return static_cast<float>(sylva::rt::control.gillespie_time); }
+
 // The first patch of surface `id` of the view file (6.2.4), to reshape (7.1).
 inline SurfaceObj GetSurface(int id) {
   double out[48] = {};
@@ -134,7 +185,18 @@ inline SurfaceObj GetSurface(int id) {
   return s;
 }
 
+// ---- Views (6.4) --------------------------------------------------------------
+
+// Draws view `view` (a window: of the view file, by name) in outputs.
+inline void UseView(int view) { sylva::rt::request(sylva::abi::kRequestUseView, view, nullptr); }
+
 // ---- Output (6.6) -----------------------------------------------------------
+
+// The current string written to, or read from, a file in Sylva's text
+// format (which reads back exactly) rather than lpfg's binary one. Call them
+// in a control statement (Start, StartEach, EndEach, End).
+inline void OutputString(const char* file) { sylva::rt::request(sylva::abi::kRequestOutputString, 0, file); }
+inline void LoadString(const char* file) { sylva::rt::request(sylva::abi::kRequestLoadString, 0, file); }
 
 inline void Printf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 inline void Printf(const char* format, ...) {

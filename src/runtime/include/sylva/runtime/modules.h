@@ -153,16 +153,24 @@ void format_params(const unsigned char* params, abi::TextSink* out) {
   (void)at;
 }
 
+}  // namespace sylva::rt
+
+#include <sylva/runtime/parse_params.h>
+
+namespace sylva::rt {
+
 template <class... T>
 constexpr abi::ModuleType module_type(const char* name) {
-  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>};
+  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>,
+                         static_cast<std::uint32_t>(sizeof...(T)), &parse_params<T...>};
 }
 
-// A predefined module's entry: the engine supplies its printer, so models do
-// not compile one for each of the predefined modules.
+// A predefined module's entry: the engine supplies its printer and reader, so
+// models do not compile them for each of the predefined modules.
 template <class... T>
 constexpr abi::ModuleType predefined_module_type(const char* name) {
-  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), nullptr};
+  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), nullptr,
+                         static_cast<std::uint32_t>(sizeof...(T)), nullptr};
 }
 
 }  // namespace sylva::rt

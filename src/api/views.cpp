@@ -1,0 +1,52 @@
+#include "api/views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace sylva {
+namespace {
+
+const io::ViewWindow* window_of(const Simulation& simulation, int view) {
+  const auto& view_file = simulation.inputs().view;
+  if (!view_file || view < 0 || view >= static_cast<int>(view_file->windows.size())) return nullptr;
+  return &view_file->windows[static_cast<std::size_t>(view)];
+}
+
+std::string path_for_view(const std::string& path, const std::string& name) {
+  const std::filesystem::path p(path);
+  std::filesystem::path named = p.parent_path() / (p.stem().string() + "-" + name + p.extension().string());
+  return named.string();
+}
+
+int share(int pixels, float fraction) { return std::max(1, static_cast<int>(std::lround(pixels * fraction))); }
+
+}  // namespace
+
+std::vector<ViewOutput> view_outputs(const std::string& path, const Simulation& simulation,
+                                     const OutputOptions& options) {
+  const std::vector<int>& views = simulation.views();
+  if (views.empty()) return {ViewOutput{0, path, options}};
+  std::vector<ViewOutput> outputs;
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    ViewOutput out{views[k], path, options};
+    const io::ViewWindow* window = window_of(simulation, views[k]);
+    if (k > 0) out.path = path_for_view(path, window ? window->name : "view" + std::to_string(views[k]));
+    if (window) {
+      out.size.width = share(options.width, window->width);
+      out.size.height = share(options.height, window->height);
+    }
+    outputs.push_back(std::move(out));
+  }
+  return outputs;
+}
+
+std::vector<std::string> view_name_defines(const io::InputFiles& inputs) {
+  std::vector<std::string> defines;
+  if (!inputs.view) return defines;
+  for (std::size_t k = 0; k < inputs.view->windows.size(); ++k)
+    defines.push_back(inputs.view->windows[k].name + "=" + std::to_string(k));
+  return defines;
+}
+
+}  // namespace sylva

@@ -1,0 +1,57 @@
+// A derivation step using a Gillespie group (LPFG manual 7.2); see gillespie.h.
+#include "derive/derivation.h"
+#include "support/diagnostic.h"
+
+namespace sylva::derive {
+
+void Derivation::derive_gillespie() {
+  abi::ControlState& c = control();
+  const int group = c.current_group;
+  // Ring L-systems are ignored in Gillespie steps (7.2): the string has two
+  // ends. Forward() and Backward() change nothing: one module is rewritten.
+  const StringView src = string_.view(types_);
+
+  // Every module offers the reactions of the first production of the group
+  // that matches it and offers any; productions outside the group (group 0's
+  // included) take no part.
+  reactions_.clear();
+  struct Gathering {
+    ReactionSet*& target;
+    ~Gathering() { target = nullptr; }
+  } gathering{gathering_reactions_};
+  gathering_reactions_ = &reactions_;
+  for (std::size_t pos = src.begin; pos < src.end; pos = src.next(pos)) {
+    for (std::uint32_t r : rules_.forward(abi::RuleKind::Production, src.id_at(pos))) {
+      const abi::Rule& rule = model_.rules[r];
+      if (rule.group != group) continue;
+      const std::size_t offers_before = reactions_.offers();
+      reaction_scratch_.clear();
+      std::size_t consumed = 0;
+      try_forward(rule, src, pos, reaction_scratch_, reaction_scratch_, true, &consumed);
+      if (!reactions_.error().empty())
+        throw ModelError(SourceLocation{rule.file, rule.line, 0},
+                         reactions_.error() + " (Gillespie group " + std::to_string(group) + ")");
+      if (reactions_.offers() > offers_before) break;
+    }
+  }
+  gathering_reactions_ = nullptr;
+
+  next_.clear();
+  if (reactions_.empty()) {
+    // No reaction can fire, now or ever: the string stays, τ is infinite.
+    c.gillespie_time = gillespie_time(0, 0);
+    if (!string_.empty()) next_.assign(string_.data(), string_.size_bytes());
+    return;
+  }
+  // Gillespie's order: the first number gives τ, the second the reaction.
+  c.gillespie_time = gillespie_time(gillespie_uniform(c.gillespie_random), reactions_.total_propensity());
+  const ReactionSet::Reaction& fired = reactions_.choose(gillespie_uniform(c.gillespie_random));
+  auto copy = [this](const unsigned char* bytes, std::size_t n) {
+    if (n > 0) next_.append(bytes, n);
+  };
+  copy(src.data + src.begin, fired.begin - src.begin);
+  copy(reactions_.successors() + fired.successor_begin, fired.successor_end - fired.successor_begin);
+  copy(src.data + fired.end, src.end - fired.end);
+}
+
+}  // namespace sylva::derive

@@ -1,0 +1,182 @@
+#include "env/comm_spec.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include "support/diagnostic.h"
+
+namespace sylva::env {
+namespace {
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// "turtle   Position" -> "turtle position": commands compare without regard
+// to case or runs of blanks.
+std::string normalized_command(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (is_space(c)) {
+      if (!out.empty() && out.back() != ' ') out.push_back(' ');
+    } else {
+      out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+    }
+  }
+  if (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+class SpecParser {
+ public:
+  SpecParser(const std::string& text, const std::string& path) : text_(text) { spec_.path = path; }
+
+  CommSpec parse() {
+    std::istringstream lines(text_);
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line)) parse_line(line, ++number);
+    last_line_ = std::max(number, 1);
+    if (spec_.executable.empty())
+      fail(last_line_, std::string::npos, "missing 'executable:' (the environmental program to run)");
+    if (spec_.communication_type.empty())
+      fail(last_line_, std::string::npos, "missing 'communication type:' (pipes, files or memory)");
+    return std::move(spec_);
+  }
+
+ private:
+  [[noreturn]] void fail(int line, std::size_t offset, const std::string& message) const {
+    throw ModelError(SourceLocation{spec_.path, line, offset == std::string::npos ? 0 : static_cast<int>(offset) + 1},
+                     message);
+  }
+
+  void parse_line(const std::string& line, int number) {
+    std::size_t start = 0;
+    while (start < line.size() && is_space(line[start])) ++start;
+    if (start == line.size() || line[start] == '#') return;  // blank, or a comment
+    const std::size_t colon = line.find(':', start);
+    if (colon == std::string::npos)
+      fail(number, start, "expected 'command: value' (executable, communication type, turtle position, ...)");
+    const std::string command = normalized_command(std::string_view(line).substr(start, colon - start));
+    std::size_t value_start = colon + 1;
+    while (value_start < line.size() && is_space(line[value_start])) ++value_start;
+    std::size_t value_end = line.size();
+    while (value_end > value_start && is_space(line[value_end - 1])) --value_end;
+    const std::string value = line.substr(value_start, value_end - value_start);
+    const Place at{number, start, value_start};
+
+    if (command == "executable") {
+      once(at, command);
+      if (value.empty()) fail(number, value_start, "expected the command line of the environmental program");
+      spec_.executable = value;
+      spec_.executable_line = number;
+      spec_.executable_column = static_cast<int>(value_start) + 1;
+    } else if (command == "communication type") {
+      once(at, command);
+      const std::string type = lower(value);
+      if (type != "pipes" && type != "files" && type != "memory" && type != "sockets")
+        fail(number, value_start, "expected 'pipes', 'files' or 'memory' as the communication type, not '" + value + "'");
+      spec_.communication_type = type;
+    } else if (command == "turtle position") {
+      format(at, command, value, 3, spec_.position);
+    } else if (command == "turtle heading") {
+      format(at, command, value, 3, spec_.heading);
+    } else if (command == "turtle left") {
+      format(at, command, value, 3, spec_.left);
+    } else if (command == "turtle up") {
+      format(at, command, value, 3, spec_.up);
+    } else if (command == "turtle line width") {
+      format(at, command, value, 1, spec_.line_width);
+    } else if (command == "turtle scale factor") {
+      format(at, command, value, 1, spec_.scale_factor);
+    } else if (command == "following module") {
+      once(at, command);
+      spec_.following_module = flag(at, value);
+    } else if (command == "verbose") {
+      once(at, command);
+      spec_.verbose = flag(at, value);
+    } else if (command == "interpreted modules") {
+      once(at, command);
+      std::string word;
+      for (char c : value + " ") {
+        if (is_space(c) || c == ',') {
+          if (!word.empty()) spec_.interpreted_modules.push_back(word);
+          word.clear();
+        } else {
+          word.push_back(c);
+        }
+      }
+    } else {
+      fail(number, start,
+           "unknown command '" + command +
+               "' (expected executable, communication type, turtle position, turtle heading, turtle left, turtle "
+               "up, turtle line width, turtle scale factor, following module, interpreted modules or verbose)");
+    }
+  }
+
+  struct Place {
+    int line;
+    std::size_t command;
+    std::size_t value;
+  };
+
+  void once(const Place& at, const std::string& command) {
+    if (std::find(seen_.begin(), seen_.end(), command) != seen_.end())
+      fail(at.line, at.command, "'" + command + ":' is given twice");
+    seen_.push_back(command);
+  }
+
+  void format(const Place& at, const std::string& command, const std::string& value, int max_values,
+              TurtleFormat& out) {
+    once(at, command);
+    std::string error;
+    std::size_t column = 0;
+    if (!parse_turtle_format(value, max_values, out, error, column)) fail(at.line, at.value + column, error);
+    if (out.count == 0) fail(at.line, at.value, "expected a format with at least one conversion, such as %g");
+  }
+
+  bool flag(const Place& at, const std::string& value) const {
+    const std::string v = lower(value);
+    if (v == "yes" || v == "on" || v == "true" || v == "1") return true;
+    if (v == "no" || v == "off" || v == "false" || v == "0") return false;
+    fail(at.line, at.value, "expected yes or no, not '" + value + "'");
+  }
+
+  const std::string& text_;
+  CommSpec spec_;
+  std::vector<std::string> seen_;
+  int last_line_ = 1;
+};
+
+}  // namespace
+
+CommSpec CommSpec::everything() {
+  CommSpec spec;
+  std::string error;
+  std::size_t column = 0;
+  parse_turtle_format("%.9g %.9g %.9g", 3, spec.position, error, column);
+  spec.heading = spec.left = spec.up = spec.position;
+  parse_turtle_format("%.9g", 1, spec.line_width, error, column);
+  spec.scale_factor = spec.line_width;
+  spec.following_module = true;
+  spec.communication_type = "pipes";
+  return spec;
+}
+
+CommSpec parse_comm_spec(const std::string& text, const std::string& path) { return SpecParser(text, path).parse(); }
+
+CommSpec read_comm_spec(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ModelError(SourceLocation{path, 0, 0}, "cannot open the communication specification file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_comm_spec(text.str(), path);
+}
+
+}  // namespace sylva::env

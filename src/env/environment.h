@@ -1,0 +1,53 @@
+// Choosing the environment a .e file names (make_field).
+//
+// The first word of the "executable:" line decides:
+//  - its file name (folders dropped) is a built-in program: honda81,
+//    ecosystem, arvo, density, clover, chiba or takenaka run in process;
+//  - it ends in ".so": a plugin, a shared library with a Field of the user's
+//    own, loaded in process (see kPluginFactoryName below);
+//  - anything else is a program started as a separate process and spoken to
+//    over pipes (external_program.h, docs/environment.md), found as written
+//    when it holds a '/' (relative to the .e file's folder), else on PATH,
+//    else in the .e file's folder.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "env/comm_spec.h"
+#include "env/field.h"
+#include "env/program.h"
+
+namespace sylva::env {
+
+// A plugin exports, with C linkage, a function of this name and type:
+//
+//   extern "C" sylva::env::Field* sylva_environment_field(int argc, const char* const* argv,
+//                                                          const char* directory);
+//
+// argv[0] is the plugin as named on the executable: line, argv[1..argc) the
+// rest of that line, `directory` the .e file's folder (parameter files are
+// relative to it). It returns a Field allocated with new (Sylva deletes it
+// before unloading the library), or null after printing why to stderr. The
+// plugin is compiled against src/env/field.h with the compiler Sylva was.
+inline constexpr const char* kPluginFactoryName = "sylva_environment_field";
+using PluginFactory = Field* (*)(int argc, const char* const* argv, const char* directory);
+
+struct FieldOptions {
+  // How long an external program may take to answer one pass before it is
+  // stopped and the run fails.
+  double timeout_seconds = 60;
+};
+
+// The executable: line of `spec` split into words as a shell would.
+ProgramInvocation invocation_of(const CommSpec& spec);
+
+// The names of the built-in programs.
+const std::vector<std::string>& builtin_program_names();
+
+// The Field for `spec`; a ModelError at the executable: line when the program
+// cannot be found, loaded or started.
+std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options = {});
+
+}  // namespace sylva::env

@@ -1,0 +1,65 @@
+// Small vector and intersection helpers shared by chiba and takenaka.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sylva::env::light {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
+inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+inline Vec3 normalized(Vec3 a) {
+  double l = length(a);
+  return l > 0 ? (1.0 / l) * a : a;
+}
+
+struct Sphere {
+  Vec3 centre;
+  double radius = 0;
+};
+
+// Where a ray from `origin` along the unit vector `direction` passes a point:
+// how far along the ray (negative behind the origin) and how far from it.
+struct RayOffset {
+  double along = 0;
+  double distance_squared = 0;
+};
+
+inline RayOffset offset_from_ray(Vec3 origin, Vec3 direction, Vec3 point) {
+  Vec3 to_point = point - origin;
+  double along = dot(to_point, direction);
+  return {along, std::max(0.0, dot(to_point, to_point) - along * along)};
+}
+
+// Length of the part of the ray (from the origin on) inside a sphere of
+// `radius` at the point described by `offset`; 0 when the ray misses it.
+inline double chord_ahead(RayOffset offset, double radius) {
+  double r2 = radius * radius;
+  if (offset.distance_squared >= r2) return 0;
+  double half = std::sqrt(r2 - offset.distance_squared);
+  double exit = offset.along + half;
+  if (exit <= 0) return 0;
+  return exit - std::max(offset.along - half, 0.0);
+}
+
+// Area of the intersection of two disks of radii a and b whose centres are
+// `d` apart.
+inline double disk_overlap_area(double a, double b, double d) {
+  if (a <= 0 || b <= 0 || d >= a + b) return 0;
+  double small = std::min(a, b);
+  if (d <= std::abs(a - b)) return std::numbers::pi * small * small;
+  // Two circular segments (the lens).
+  double alpha = std::acos(std::clamp((d * d + a * a - b * b) / (2 * d * a), -1.0, 1.0));
+  double beta = std::acos(std::clamp((d * d + b * b - a * a) / (2 * d * b), -1.0, 1.0));
+  return a * a * (alpha - std::sin(2 * alpha) / 2) + b * b * (beta - std::sin(2 * beta) / 2);
+}
+
+}  // namespace sylva::env::light

@@ -1,0 +1,47 @@
+#include "geometry/back_sides.h"
+
+#include <unordered_map>
+
+namespace sylva::geometry {
+
+void split_back_sides(TriangleMesh& mesh) {
+  bool any = false;
+  for (const MeshPart& p : mesh.parts) any = any || (p.back_color >= 0 && (p.back_color & 255) != (p.color & 255));
+  if (!any) return;
+  std::vector<MeshPart> parts;
+  parts.reserve(mesh.parts.size() * 2);
+  std::unordered_map<std::uint32_t, std::uint32_t> copy_of;  // front vertex -> its reversed copy
+  for (MeshPart front : mesh.parts) {
+    if (front.back_color < 0 || (front.back_color & 255) == (front.color & 255)) {
+      parts.push_back(front);
+      continue;
+    }
+    front.side = MeshPart::Side::Front;
+    parts.push_back(front);
+    MeshPart back = front;
+    back.side = MeshPart::Side::Back;
+    back.color = front.back_color;
+    back.first_index = static_cast<std::uint32_t>(mesh.indices.size());
+    copy_of.clear();
+    auto copy = [&](std::uint32_t v) {
+      auto [it, added] = copy_of.emplace(v, static_cast<std::uint32_t>(mesh.positions.size()));
+      if (added) {
+        const Vec3 p = mesh.positions[v], n = mesh.normals[v];
+        mesh.positions.push_back(p);
+        mesh.normals.push_back(-n);
+      }
+      return it->second;
+    };
+    for (std::uint32_t k = 0; k + 2 < front.index_count; k += 3) {
+      const std::uint32_t a = mesh.indices[front.first_index + k], b = mesh.indices[front.first_index + k + 1],
+                          c = mesh.indices[front.first_index + k + 2];
+      const std::uint32_t ca = copy(a), cb = copy(b), cc = copy(c);
+      mesh.indices.insert(mesh.indices.end(), {ca, cc, cb});
+    }
+    back.index_count = static_cast<std::uint32_t>(mesh.indices.size()) - back.first_index;
+    parts.push_back(back);
+  }
+  mesh.parts = std::move(parts);
+}
+
+}  // namespace sylva::geometry

@@ -1,0 +1,105 @@
+// Production groups (LPFG manual 4.4): group N: ... endgroup, UseGroup,
+// CurrentGroup, and group 0 as the fallback, for productions, decomposition
+// and interpretation rules. Expected strings are worked out by hand.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "api/simulation.h"
+#include "io/string_text.h"
+#include "test_support.h"
+
+namespace sylva::test {
+namespace {
+
+std::string write_model(const std::string& test, const std::string& body) {
+  const std::string path = make_temp_dir("groups-" + test) + "/model.l";
+  std::ofstream(path) << "#include <lpfgall.h>\n"
+                         "module A(int); module B(int); module C(int);\n"
+                      << body;
+  return path;
+}
+
+TEST(Groups, CurrentGroupFirstThenGroupZero) {
+  // Step 1 in group 1: A has a group-1 rule (A(1)); B only a group-0 one (B(10)).
+  // Step 2 in group 2: A falls back to group 0 (A(101)); B has a group-2 rule (B(12)).
+  // Step 3 in group 0 (UseGroup(0)): only group 0: A(201), B(22).
+  const std::string model = write_model("fallback",
+                                        "int n;\nStart: { n = 0; }\n"
+                                        "StartEach: { n++; UseGroup(n == 3 ? 0 : n); }\n"
+                                        "derivation length: 3;\nAxiom: A(0) B(0);\n"
+                                        "A(x): { produce A(x + 100); }\n"
+                                        "B(x): { produce B(x + 10); }\n"
+                                        "group 1:\nA(x): { produce A(x + 1); }\n"
+                                        "group 2:\nB(x): { produce B(x + 2); }\n"
+                                        "endgroup\n");
+  EXPECT_EQ(derive_string(model, 1), "A(1) B(10)");
+  EXPECT_EQ(derive_string(model, 2), "A(101) B(12)");
+  EXPECT_EQ(derive_string(model, 3), "A(201) B(22)");
+}
+
+TEST(Groups, CurrentGroupInBodies) {
+  // UseGroup in Start takes effect at the first step; a body reads it back.
+  const std::string model = write_model("current",
+                                        "Start: { UseGroup(3); }\nderivation length: 1;\nAxiom: A(0);\n"
+                                        "group 3:\nA(x): { produce A(CurrentGroup()); }\nendgroup\n");
+  EXPECT_EQ(derive_string(model), "A(3)");
+}
+
+TEST(Groups, DecompositionUsesTheCurrentGroup) {
+  // The axiom is decomposed in group 0: group 1's rule does not apply -> A(0).
+  // Step 1 in group 1: A(0) -> A(1) (group 0 production); decomposition in
+  // group 1 -> B(1) C(1).
+  const std::string model = write_model("decomposition",
+                                        "Start: { UseGroup(1); }\nderivation length: 1;\nAxiom: A(0);\n"
+                                        "A(x): { produce A(x + 1); }\n"
+                                        "decomposition:\ngroup 1:\nA(x): { produce B(x) C(x); }\nendgroup\n");
+  EXPECT_EQ(derive_string(model, 0), "A(0)");
+  EXPECT_EQ(derive_string(model, 1), "B(1) C(1)");
+}
+
+TEST(Groups, InterpretationUsesTheCurrentGroup) {
+  // After step 1 (group 2) A(0) is interpreted by group 2's rule, B by group 0's.
+  const std::string model = write_model("interpretation",
+                                        "Start: { UseGroup(2); }\nderivation length: 1;\nAxiom: A(0) B(0);\n"
+                                        "interpretation:\n"
+                                        "A(x): { produce C(0); }\nB(x): { produce C(5); }\n"
+                                        "group 2:\nA(x): { produce C(2); }\nendgroup\n");
+  build::BuildOptions options;
+  options.cache_dir = SYLVA_TEST_CACHE_DIR;
+  Simulation simulation(model, options);
+  simulation.derivation().run();
+  EXPECT_EQ(io::format_string(simulation.derivation().interpreted(), simulation.types()), "C(2) C(5)\n");
+}
+
+TEST(Groups, EmptyGroupIsStillAGroup) {
+  // group 4 has no rules: selecting it applies group 0's.
+  const std::string model = write_model("empty",
+                                        "Start: { UseGroup(4); }\nderivation length: 1;\nAxiom: A(0);\n"
+                                        "A(x): { produce A(x + 1); }\ngroup 4:\nendgroup\n");
+  EXPECT_EQ(derive_string(model), "A(1)");
+}
+
+// UseGroup of a group the model never defines: an error at the call, a
+// non-zero exit and no output file.
+TEST(Groups, UndefinedGroupIsAnError) {
+  // Line 6 holds the UseGroup(7) call (after the 2 header lines, "int n;", Start and "StartEach: {").
+  const std::string model = write_model("undefined",
+                                        "int n;\nStart: { n = 0; }\n"
+                                        "StartEach: { n++;\n  if (n == 2) UseGroup(7); else UseGroup(1); }\n"
+                                        "derivation length: 3;\nAxiom: A(0);\n"
+                                        "group 1:\nA(x): { produce A(x + 1); }\nendgroup\n");
+  const std::string dir = std::filesystem::path(model).parent_path().string();
+  const std::string out = dir + "/out.txt";
+  const ProcessResult r = run_sylva({"run", model, "--string", out});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(model + ":6: error: UseGroup(7) selects group 7, but the model defines no 'group 7:'"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace sylva::test

@@ -1,0 +1,124 @@
+// The communication specification file (.e, EnviroManual section 2): what
+// each command sets, how many values a turtle format sends, and the errors
+// for malformed files, which point at the file, line and column.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "env/comm_spec.h"
+#include "env/turtle_format.h"
+#include "support/diagnostic.h"
+#include "test_support.h"
+
+namespace sylva::env {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_comm_spec(text, "plant.e");
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(CommSpec, ReadsEveryCommand) {
+  const CommSpec spec = parse_comm_spec(
+      "executable: honda81 -e honda.e honda.par\n"
+      "communication type: pipes\n"
+      "turtle position: P:%.3f %.3f\n"
+      "turtle heading: H:%g %g %g\n"
+      "turtle left: %f\n"
+      "turtle up: %e %e\n"
+      "turtle line width: %g\n"
+      "turtle scale factor: %5.2f\n"
+      "following module: yes\n"
+      "interpreted modules: L1 L2, L3\n"
+      "verbose: on\n",
+      "plant.e");
+  EXPECT_EQ(spec.executable, "honda81 -e honda.e honda.par");
+  EXPECT_EQ(spec.executable_line, 1);
+  EXPECT_EQ(spec.executable_column, 13);
+  EXPECT_EQ(spec.communication_type, "pipes");
+  EXPECT_EQ(spec.position.text, "P:%.3f %.3f");
+  EXPECT_EQ(spec.position.count, 2);
+  EXPECT_EQ(spec.heading.count, 3);
+  EXPECT_EQ(spec.left.count, 1);
+  EXPECT_EQ(spec.up.count, 2);
+  EXPECT_EQ(spec.line_width.count, 1);
+  EXPECT_EQ(spec.scale_factor.count, 1);
+  EXPECT_TRUE(spec.following_module);
+  EXPECT_EQ(spec.interpreted_modules, (std::vector<std::string>{"L1", "L2", "L3"}));
+  EXPECT_TRUE(spec.verbose);
+}
+
+TEST(CommSpec, DefaultsSendNoTurtleAndNoFollowingModule) {
+  const CommSpec spec = parse_comm_spec("  Executable :  ./env   \r\ncommunication   type: Files\n\n", "plant.e");
+  EXPECT_EQ(spec.executable, "./env");
+  EXPECT_EQ(spec.communication_type, "files");
+  EXPECT_EQ(spec.position.count, 0);
+  EXPECT_EQ(spec.line_width.count, 0);
+  EXPECT_FALSE(spec.following_module);
+  EXPECT_FALSE(spec.verbose);
+  EXPECT_TRUE(spec.interpreted_modules.empty());
+}
+
+TEST(CommSpec, ReadsAFile) {
+  const std::string path = test::make_temp_dir("comm-spec") + "/plant.e";
+  std::ofstream(path) << "executable: chiba chiba.par\ncommunication type: memory\nturtle position: %g %g %g\n";
+  const CommSpec spec = read_comm_spec(path);
+  EXPECT_EQ(spec.path, path);
+  EXPECT_EQ(spec.position.count, 3);
+}
+
+TEST(CommSpec, MalformedFilesPointAtTheFault) {
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle position %g\n"),
+            "plant.e:3:1: error: expected 'command: value' (executable, communication type, turtle position, ...)");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\n  turtle colour: %g\n"),
+            "plant.e:3:3: error: unknown command 'turtle colour' (expected executable, communication type, turtle "
+            "position, turtle heading, turtle left, turtle up, turtle line width, turtle scale factor, following "
+            "module, interpreted modules or verbose)");
+  // The fourth conversion of "%g %g %g %g" starts at column 27.
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle position: %g %g %g %g\n"),
+            "plant.e:3:27: error: at most 3 values can be sent for this field");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle line width: %g %g\n"),
+            "plant.e:3:23: error: at most 1 value can be sent for this field");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle heading: %s\n"),
+            "plant.e:3:17: error: expected a number conversion such as %g, %f or %.3f");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle up: none\n"),
+            "plant.e:3:12: error: expected a format with at least one conversion, such as %g");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: carrier pigeon\n"),
+            "plant.e:2:21: error: expected 'pipes', 'files' or 'memory' as the communication type, not 'carrier "
+            "pigeon'");
+  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nfollowing module: perhaps\n"),
+            "plant.e:3:19: error: expected yes or no, not 'perhaps'");
+  EXPECT_EQ(error_of("executable: a\nexecutable: b\ncommunication type: pipes\n"),
+            "plant.e:2:1: error: 'executable:' is given twice");
+  EXPECT_EQ(error_of("executable:\ncommunication type: pipes\n"),
+            "plant.e:1:12: error: expected the command line of the environmental program");
+  EXPECT_EQ(error_of("communication type: pipes\n"),
+            "plant.e:1: error: missing 'executable:' (the environmental program to run)");
+  EXPECT_EQ(error_of("executable: a\n"), "plant.e:1: error: missing 'communication type:' (pipes, files or memory)");
+}
+
+TEST(CommSpec, AMissingFileIsNamed) {
+  try {
+    read_comm_spec("/nonexistent/plant.e");
+    FAIL() << "no error";
+  } catch (const ModelError& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/plant.e: error: cannot open the communication specification file");
+  }
+}
+
+TEST(TurtleFormat, FormatsValuesAsPrintfWould) {
+  TurtleFormat f;
+  std::string error;
+  std::size_t column = 0;
+  ASSERT_TRUE(parse_turtle_format("P:%.3f %g 100%% %d", 3, f, error, column));
+  EXPECT_EQ(f.count, 3);
+  const float values[3] = {1.5f, -0.25f, 7.9f};
+  EXPECT_EQ(format_turtle_values(f, values), "P:1.500 -0.25 100% 7");
+}
+
+}  // namespace
+}  // namespace sylva::env

@@ -1,0 +1,92 @@
+// Stochastic productions in cpfg models with sub-L-systems (CPFG manual 4.5,
+// 7.2). All L-systems draw from one random stream, seeded by the main
+// L-system's seed: as cpfg seeds drand48 (seed48({seed, 0, 155})); every
+// module of the string takes one draw u in string order, and a module is
+// rewritten by the first of its own L-system's productions whose cumulative
+// probability reaches u times the total of that L-system's productions for
+// it. The expected strings are worked out here with the C library's erand48
+// on the same seed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "api/simulation.h"
+#include "io/string_text.h"
+#include "test_support.h"
+
+namespace sylva::test {
+namespace {
+
+// L-system 1 rewrites the B outside the call: P, Q or R with weights 1, 1, 2
+// (total 4). L-system 2 rewrites the B inside ?(2,1)...$: X with 30, Y with
+// 70 (total 100). L-system 2's own seed: is not the stream's.
+const char* const kModel =
+    "Lsystem: 1\n"
+    "seed: 1\n"
+    "derivation length: 6\n"
+    "Axiom: B?(2,1)B$\n"
+    "B --> PB : 1\n"
+    "B --> QB : 1\n"
+    "B --> RB : 2\n"
+    "endlsystem\n"
+    "Lsystem: 2\n"
+    "seed: 99\n"
+    "Axiom: B\n"
+    "B --> XB : 30\n"
+    "B --> YB : 70\n"
+    "endlsystem\n";
+
+// The string after `steps` steps, derived by hand with erand48.
+std::string expected_after(int steps) {
+  unsigned short state[3] = {1, 0, 155};
+  std::vector<std::string> modules = {"B", "?(2,1)", "B", "$"};
+  for (int step = 0; step < steps; ++step) {
+    std::vector<std::string> next;
+    bool in_call = false;
+    for (const std::string& m : modules) {
+      const double u = erand48(state);  // every module draws, B or not
+      if (m == "?(2,1)") in_call = true;
+      if (m == "$") in_call = false;
+      if (m != "B") {
+        next.push_back(m);
+        continue;
+      }
+      if (in_call) {
+        next.push_back(100 * u - 30 <= 0 ? "X" : "Y");
+      } else {
+        const double r = 4 * u;
+        next.push_back(r - 1 <= 0 ? "P" : r - 2 <= 0 ? "Q" : "R");
+      }
+      next.push_back("B");
+    }
+    modules = next;
+  }
+  std::string text;
+  for (const std::string& m : modules) text += m;
+  return text;
+}
+
+TEST(CpfgSubLsystemSeed, OneStreamAcrossLsystemsWithEachLsystemsTotals) {
+  const std::string dir = make_temp_dir("cpfg-sub-seed");
+  std::ofstream(dir + "/lsystem.l") << kModel;
+  build::BuildOptions build;
+  build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  Simulation simulation(dir + "/lsystem.l", build);
+  simulation.derivation().begin();
+  for (int steps = 1; steps <= 6; ++steps) {
+    simulation.derivation().step();
+    std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    EXPECT_EQ(text, expected_after(steps)) << "after " << steps << " steps";
+  }
+  // Both L-systems chose both ways somewhere in six steps (so the test
+  // would notice a swapped total).
+  const std::string last = expected_after(6);
+  for (char c : std::string("PQRXY")) EXPECT_NE(last.find(c), std::string::npos) << c;
+}
+
+}  // namespace
+}  // namespace sylva::test

@@ -1,0 +1,80 @@
+// Reading the text form of a string back: typed parameters by module name,
+// and errors at the line and column of the saved text.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "io/string_reader.h"
+#include "support/diagnostic.h"
+#include "sylva/runtime/modules.h"
+
+namespace sylva::io {
+namespace {
+
+ModuleTypes test_types() {
+  auto entry = [](const abi::ModuleType& t) {
+    return ModuleTypes::Type{t.name, t.param_size, t.format_params, t.param_count, t.parse_params};
+  };
+  return ModuleTypes({entry(rt::module_type<float, int, V3f, bool, double>("A")), entry(rt::module_type<>("B")),
+                      entry(rt::module_type<V2d, unsigned char, float[2]>("C"))});
+}
+
+template <class T>
+T param_at(const ModuleString& s, std::size_t offset) {
+  T value;
+  std::memcpy(static_cast<void*>(&value), s.data() + offset, sizeof value);
+  return value;
+}
+
+TEST(StringReader, ReadsEveryParameterWithItsType) {
+  const ModuleTypes types = test_types();
+  const ModuleString s =
+      parse_string("A(0.100000001,-3,(1,2.5,-0.25),1,0.33333333333333331)  B\n\tC((0.5,-2),255,[3,4])\n", types, "s");
+  ASSERT_EQ(s.count_modules(types), 3u);
+  // A: [id] float int V3f bool double [id]
+  std::size_t at = sizeof(ModuleId);
+  EXPECT_EQ(param_at<float>(s, at), 0.1f);
+  EXPECT_EQ(param_at<int>(s, at + 4), -3);
+  const V3f v = param_at<V3f>(s, at + 8);
+  EXPECT_EQ(v.x, 1.0f);
+  EXPECT_EQ(v.y, 2.5f);
+  EXPECT_EQ(v.z, -0.25f);
+  EXPECT_TRUE(param_at<bool>(s, at + 20));
+  EXPECT_EQ(param_at<double>(s, at + 21), 1.0 / 3.0);
+  at += types[0].param_size + sizeof(ModuleId);
+  EXPECT_EQ(module_id_at(s.data(), at), 1);  // B
+  at += types.encoded_size(1) + sizeof(ModuleId);
+  const V2d w = param_at<V2d>(s, at);
+  EXPECT_EQ(w.x, 0.5);
+  EXPECT_EQ(w.y, -2.0);
+  EXPECT_EQ(param_at<unsigned char>(s, at + 16), 255);
+  EXPECT_EQ(param_at<float>(s, at + 17), 3.0f);
+  EXPECT_EQ(param_at<float>(s, at + 21), 4.0f);
+}
+
+TEST(StringReader, AnEmptyTextIsAnEmptyString) {
+  EXPECT_TRUE(parse_string(" \n", test_types(), "s").empty());
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_string(text, test_types(), "saved.str");
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(StringReader, ErrorsPointIntoTheSavedText) {
+  EXPECT_EQ(error_of("B\nB D"), "saved.str:2:3: error: unknown module 'D' (the model declares no module of that name)");
+  EXPECT_EQ(error_of("B(1)"), "saved.str:1:1: error: module 'B' has 0 parameters but the saved string gives 1");
+  EXPECT_EQ(error_of("C((1,2),256,[1,2])"),
+            "saved.str:1:9: error: expected an integer in the range of the parameter's type in the parameters of 'C'");
+  EXPECT_EQ(error_of("C((1,2),-1,[1,2])"), "saved.str:1:9: error: expected an integer of 0 or more in the parameters of 'C'");
+  EXPECT_EQ(error_of("C((1,2)x,1,[1,2])"), "saved.str:1:8: error: expected ',' in the parameters of 'C'");
+  EXPECT_EQ(error_of("A(1,2,(1,2,3),1,4)B"), "saved.str:1:19: error: expected a space between modules, found 'B'");
+  EXPECT_EQ(error_of("B A(1,2"), "saved.str:1:4: error: expected ')' to close the parameters of 'A'");
+}
+
+}  // namespace
+}  // namespace sylva::io
