@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "env/keyword.h"
 #include "support/diagnostic.h"
 
 namespace sylva::env {
@@ -16,22 +17,7 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-// "turtle   Position" -> "turtle position": commands compare without regard
-// to case or runs of blanks.
-std::string normalized_command(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    if (is_space(c)) {
-      if (!out.empty() && out.back() != ' ') out.push_back(' ');
-    } else {
-      out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
-    }
-  }
-  if (!out.empty() && out.back() == ' ') out.pop_back();
-  return out;
-}
 
 class SpecParser {
  public:
@@ -58,16 +44,16 @@ class SpecParser {
 
   void parse_line(const std::string& line, int number) {
     std::size_t start = 0;
-    while (start < line.size() && is_space(line[start])) ++start;
+    while (start < line.size() && is_blank(line[start])) ++start;
     if (start == line.size() || line[start] == '#') return;  // blank, or a comment
     const std::size_t colon = line.find(':', start);
     if (colon == std::string::npos)
       fail(number, start, "expected 'command: value' (executable, communication type, turtle position, ...)");
-    const std::string command = normalized_command(std::string_view(line).substr(start, colon - start));
+    const std::string command = normalized_keyword(std::string_view(line).substr(start, colon - start));
     std::size_t value_start = colon + 1;
-    while (value_start < line.size() && is_space(line[value_start])) ++value_start;
+    while (value_start < line.size() && is_blank(line[value_start])) ++value_start;
     std::size_t value_end = line.size();
-    while (value_end > value_start && is_space(line[value_end - 1])) --value_end;
+    while (value_end > value_start && is_blank(line[value_end - 1])) --value_end;
     const std::string value = line.substr(value_start, value_end - value_start);
     const Place at{number, start, value_start};
 
@@ -105,7 +91,7 @@ class SpecParser {
       once(at, command);
       std::string word;
       for (char c : value + " ") {
-        if (is_space(c) || c == ',') {
+        if (is_blank(c) || c == ',') {
           if (!word.empty()) spec_.interpreted_modules.push_back(word);
           word.clear();
         } else {

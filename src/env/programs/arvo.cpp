@@ -56,14 +56,12 @@
 
 #include "env/programs/arvo_background_file.h"
 #include "env/programs/arvo_obstacles.h"
-#include "env/programs/collision_parameter_file.h"
-#include "env/programs/collision_program_support.h"
+#include "env/programs/parameter_file.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
 
 namespace sylva::env {
 namespace {
-
-using namespace collision;
 
 // The vector operators live with the geometry (std::array has no operators to
 // find by argument-dependent lookup).
@@ -95,7 +93,8 @@ int positive_integer(const ParameterCommand& command) {
 ArvoParameters read_arvo_parameters(const std::filesystem::path& path) {
   ParameterFile file(path, kProgram,
                      {"domain size", "position", "grid size", "surface distance", "max surface distance", "tries for q",
-                      "tries for surface", "obstacles", "add objects", "remove objects", "seed", "verbose"});
+                      "tries for surface", "obstacles", "add objects", "remove objects", "seed", "verbose"},
+                     ParameterDialect::collision);
   ArvoParameters p;
   if (const ParameterCommand* c = file.find("domain size")) {
     auto v = c->numbers(3);
@@ -277,8 +276,8 @@ class Arvo : public Field {
 }  // namespace
 
 std::unique_ptr<Field> make_arvo(const ProgramInvocation& invocation) {
-  using namespace collision;
-  return std::make_unique<Arvo>(invocation, read_arvo_parameters(parameter_file_path(invocation, kProgram)));
+  std::filesystem::path path = parameter_file_path(invocation, kProgram, ParameterDialect::collision);
+  return std::make_unique<Arvo>(invocation, read_arvo_parameters(path));
 }
 
 }  // namespace sylva::env

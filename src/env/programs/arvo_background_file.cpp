@@ -1,13 +1,13 @@
 #include "env/programs/arvo_background_file.h"
 
 #include <cctype>
-#include <charconv>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "env/programs/parameter_file.h"
 #include "support/diagnostic.h"
 
 namespace sylva::env::arvo {
@@ -94,13 +94,7 @@ std::vector<Token> tokenize(const std::string& file, const std::string& text) {
   return tokens;
 }
 
-std::optional<double> to_number(std::string_view text) {
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  double value = 0;
-  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
+std::optional<double> to_number(std::string_view text) { return parse_number<double>(text); }
 
 class BackgroundReader {
  public:

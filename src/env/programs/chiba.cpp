@@ -14,8 +14,7 @@
 #include "env/programs/chiba_parameters.h"
 #include "env/programs/light_columns.h"
 #include "env/programs/light_parallel.h"
-#include "env/programs/light_parameter_file.h"
-#include "env/programs/light_queries.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
 
 namespace sylva::env {
@@ -85,15 +84,14 @@ class Chiba : public Field {
     std::vector<Sphere> spheres;
     spheres.reserve(queries.size());
     for (const Query& q : queries) {
-      double radius = light::query_parameter(q, 0);
+      double radius = query_parameter(q, 0);
       if (radius < 0) {
-        std::ostringstream message;
-        message << "chiba: module " << q.module.symbol << " number " << q.id << " gives the sphere radius " << radius
-                << "; expected 0 (the default radius) or more";
-        throw std::runtime_error(message.str());
+        std::ostringstream problem;
+        problem << "gives the sphere radius " << radius << "; expected 0 (the default radius) or more";
+        fail_module("chiba", q, problem.str());
       }
       if (radius == 0) radius = p_.radius;
-      spheres.push_back({light::query_position(q, "chiba"), radius});
+      spheres.push_back({light::to_vec3(turtle_position(q, "chiba")), radius});
     }
     return spheres;
   }
@@ -133,7 +131,7 @@ class Chiba : public Field {
 }  // namespace
 
 std::unique_ptr<Field> make_chiba(const ProgramInvocation& invocation) {
-  return std::make_unique<Chiba>(read_chiba_parameters(light::parameter_file_path(invocation, "chiba")));
+  return std::make_unique<Chiba>(read_chiba_parameters(parameter_file_path(invocation, "chiba", ParameterDialect::light)));
 }
 
 }  // namespace sylva::env

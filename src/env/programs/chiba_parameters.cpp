@@ -1,56 +1,44 @@
 #include "env/programs/chiba_parameters.h"
 
-#include "env/programs/light_parameter_file.h"
+#include "env/programs/light_source_commands.h"
+#include "env/programs/parameter_file.h"
 
 namespace sylva::env {
 
-using namespace light;
-
 ChibaParameters read_chiba_parameters(const std::filesystem::path& path) {
-  const std::vector<std::string> known{"grid size",   "number of samples", "lower to upper ratio",
-                                       "use CIE formula", "source direction", "transmittance",
-                                       "radius",      "beam radius",       "estimate intersection area",
-                                       "verbose"};
+  ParameterFile file(path, "chiba",
+                     {"grid size", "number of samples", "lower to upper ratio", "use CIE formula", "source direction",
+                      "transmittance", "radius", "beam radius", "estimate intersection area", "verbose"},
+                     ParameterDialect::light);
   ChibaParameters p;
-  const ParameterLine* first_source = nullptr;
-  std::vector<ParameterLine> lines = read_parameter_file(path, "chiba");
-  for (const ParameterLine& line : lines) {
-    const std::string& k = line.keyword;
+  light::SourceLines sources;
+  for (const ParameterCommand& line : file.commands()) {
+    const std::string& k = line.name();
     if (k == "grid size") {
-      std::vector<int> n = read_positive_integers(line, 3, "voxels along x, y and z");
-      p.grid_size = {n[0], n[1], n[2]};
+      p.grid_size = light::read_grid_size(line);
     } else if (k == "number of samples") {
-      p.samples = read_positive_integers(line, 1, "the number of samples of the light sphere")[0];
+      p.samples = line.read_positive_integers(1, "the number of samples of the light sphere")[0];
     } else if (k == "lower to upper ratio") {
-      p.lower_to_upper = read_number_in(line, 0, 1, "the ratio of lower to upper hemisphere intensity");
+      p.lower_to_upper = line.read_number_in(0, 1, "the ratio of lower to upper hemisphere intensity");
     } else if (k == "use cie formula") {
-      p.cie_overcast = read_flag(line);
+      p.cie_overcast = line.read_flag();
     } else if (k == "source direction") {
-      std::vector<double> v = read_numbers(line, 4, "direction x y z and intensity");
-      if (v[0] == 0 && v[1] == 0 && v[2] == 0) fail_at(line, first_value_column(line), "expected a direction other than 0 0 0");
-      if (v[3] < 0) fail_at(line, first_value_column(line), "expected an intensity of 0 or more");
-      p.sources.push_back({{v[0], v[1], v[2]}, v[3]});
-      if (!first_source) first_source = &line;
+      sources.read(line);
     } else if (k == "transmittance") {
-      p.transmittance = read_number_in(line, 0, 1, "the transmittance");
+      p.transmittance = line.read_number_in(0, 1, "the transmittance");
     } else if (k == "radius") {
-      p.radius = read_number_at_least(line, 0, "the default sphere radius");
+      p.radius = line.read_number_at_least(0, "the default sphere radius");
     } else if (k == "beam radius") {
-      p.beam_radius = read_number_in(line, 0, 1, "the beam radius (a fraction of the sphere's radius)");
+      p.beam_radius = line.read_number_in(0, 1, "the beam radius (a fraction of the sphere's radius)");
     } else if (k == "estimate intersection area") {
-      p.estimate_intersection_area = read_flag(line);
+      p.estimate_intersection_area = line.read_flag();
     } else if (k == "verbose") {
-      p.verbose = read_flag(line);
+      p.verbose = line.read_flag();
     } else {
-      fail_unknown_keyword(line, known);
+      file.fail_unknown(line);
     }
   }
-  if (!p.sources.empty()) {
-    double total = 0;
-    for (const light::LightSource& s : p.sources) total += s.intensity;
-    if (!(total > 0)) fail_at(*first_source, first_value_column(*first_source), "the sources' intensities add up to 0");
-    light::normalize_sources(p.sources);
-  }
+  if (!sources.empty()) p.sources = sources.normalized();
   return p;
 }
 

@@ -11,8 +11,7 @@
 
 #include "env/programs/clover_leaf_grid.h"
 #include "env/programs/clover_parameters.h"
-#include "env/programs/light_parameter_file.h"
-#include "env/programs/light_queries.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
 
 namespace sylva::env {
@@ -61,15 +60,14 @@ class Clover : public Field {
     if (p1 == 0) return CloverAction::query;
     if (p1 == 1) return CloverAction::add_leaf;
     if (p1 == 2) return CloverAction::remove_leaf;
-    std::ostringstream message;
-    message << "clover: module " << q.module.symbol << " number " << q.id << " asks for action " << p1
-            << "; expected 0 (light query), 1 (add a leaf) or 2 (remove a leaf)";
-    throw std::runtime_error(message.str());
+    std::ostringstream problem;
+    problem << "asks for action " << p1 << "; expected 0 (light query), 1 (add a leaf) or 2 (remove a leaf)";
+    fail_module("clover", q, problem.str());
   }
 
   std::pair<double, double> ground_point(const Query& q) const {
-    light::Vec3 p = light::query_position(q, "clover");
-    return {p.x, z_is_up_ ? p.y : p.z};
+    const std::array<float, 3>& p = turtle_position(q, "clover");
+    return {p[0], z_is_up_ ? p[1] : p[2]};
   }
 
   LeafGrid grid_;
@@ -81,7 +79,7 @@ class Clover : public Field {
 }  // namespace
 
 std::unique_ptr<Field> make_clover(const ProgramInvocation& invocation) {
-  return std::make_unique<Clover>(read_clover_parameters(light::parameter_file_path(invocation, "clover")));
+  return std::make_unique<Clover>(read_clover_parameters(parameter_file_path(invocation, "clover", ParameterDialect::light)));
 }
 
 }  // namespace sylva::env

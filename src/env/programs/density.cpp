@@ -18,45 +18,27 @@
 #include <iostream>
 #include <numbers>
 
-#include "env/programs/collision_parameter_file.h"
-#include "env/programs/collision_program_support.h"
 #include "env/programs/grid_uniform.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
+#include "env/programs/radius_parameters.h"
 
 namespace sylva::env {
 namespace {
 
-using namespace collision;
+using collision::Point3;
+using collision::UniformGrid;
 
 constexpr const char* kProgram = "density";
 
-struct DensityParameters {
-  float radius = 0;
-  bool three_d = false;
-  bool verbose = false;
-};
-
-DensityParameters read_density_parameters(const std::filesystem::path& path) {
-  ParameterFile file(path, kProgram, {"radius", "3d case", "verbose"});
-  DensityParameters parameters;
-  const ParameterCommand& radius = file.require("radius", "radius: 2");
-  parameters.radius = radius.number();
-  if (!(parameters.radius > 0) || !std::isfinite(parameters.radius))
-    radius.fail(radius.values()[0], "expected a radius greater than 0, found '" + radius.values()[0].text + "'");
-  if (const ParameterCommand* three_d = file.find("3d case")) parameters.three_d = three_d->flag();
-  if (const ParameterCommand* verbose = file.find("verbose")) parameters.verbose = verbose->flag();
-  return parameters;
-}
-
 class Density : public Field {
  public:
-  Density(ProgramInvocation invocation, DensityParameters parameters)
+  Density(ProgramInvocation invocation, RadiusParameters parameters)
       : invocation_(std::move(invocation)), parameters_(parameters) {}
 
   void answer(std::span<const Query> queries, std::span<Answer> answers, int step) override {
     if (queries.empty()) return;
-    require_turtle_values(invocation_, kProgram, "turtle position", queries[0].turtle.position_count,
-                          parameters_.three_d ? 3 : 2);
+    require_turtle_position(invocation_, kProgram, queries[0], parameters_.three_d);
     std::size_t count = queries.size();
     std::vector<Point3> centres(count);
     for (std::size_t i = 0; i < count; ++i) centres[i] = position_in(queries[i], parameters_.three_d);
@@ -84,14 +66,14 @@ class Density : public Field {
 
  private:
   ProgramInvocation invocation_;
-  DensityParameters parameters_;
+  RadiusParameters parameters_;
 };
 
 }  // namespace
 
 std::unique_ptr<Field> make_density(const ProgramInvocation& invocation) {
-  using namespace collision;
-  return std::make_unique<Density>(invocation, read_density_parameters(parameter_file_path(invocation, kProgram)));
+  std::filesystem::path path = parameter_file_path(invocation, kProgram, ParameterDialect::collision);
+  return std::make_unique<Density>(invocation, read_radius_parameters(path, kProgram, "radius: 2"));
 }
 
 }  // namespace sylva::env

@@ -26,15 +26,16 @@
 #include <cmath>
 #include <iostream>
 
-#include "env/programs/collision_parameter_file.h"
-#include "env/programs/collision_program_support.h"
 #include "env/programs/grid_uniform.h"
+#include "env/programs/parameter_file.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
 
 namespace sylva::env {
 namespace {
 
-using namespace collision;
+using collision::Point3;
+using collision::UniformGrid;
 
 constexpr const char* kProgram = "ecosystem";
 
@@ -46,7 +47,7 @@ struct EcosystemParameters {
 };
 
 EcosystemParameters read_ecosystem_parameters(const std::filesystem::path& path) {
-  ParameterFile file(path, kProgram, {"grid size", "vigor", "3d case", "verbose"});
+  ParameterFile file(path, kProgram, {"grid size", "vigor", "3d case", "verbose"}, ParameterDialect::collision);
   EcosystemParameters parameters;
   const ParameterCommand& grid = file.require("grid size", "grid size: 20 20");
   std::vector<float> size = grid.numbers(3, /*optional_last=*/true, /*fallback=*/1);
@@ -68,12 +69,9 @@ class Ecosystem : public Field {
       : invocation_(std::move(invocation)), parameters_(parameters) {}
 
   void answer(std::span<const Query> queries, std::span<Answer> answers, int step) override {
-    std::vector<std::size_t> query_of;
-    for (std::size_t q = 0; q < queries.size(); ++q)
-      if (!queries[q].module.parameters.empty()) query_of.push_back(q);
+    std::vector<std::size_t> query_of = queries_with_parameters(queries);
     if (query_of.empty()) return;
-    require_turtle_values(invocation_, kProgram, "turtle position", queries[query_of[0]].turtle.position_count,
-                          parameters_.three_d ? 3 : 2);
+    require_turtle_position(invocation_, kProgram, queries[query_of[0]], parameters_.three_d);
 
     std::size_t count = query_of.size();
     std::vector<Point3> centres(count);
@@ -125,8 +123,8 @@ class Ecosystem : public Field {
 }  // namespace
 
 std::unique_ptr<Field> make_ecosystem(const ProgramInvocation& invocation) {
-  using namespace collision;
-  return std::make_unique<Ecosystem>(invocation, read_ecosystem_parameters(parameter_file_path(invocation, kProgram)));
+  std::filesystem::path path = parameter_file_path(invocation, kProgram, ParameterDialect::collision);
+  return std::make_unique<Ecosystem>(invocation, read_ecosystem_parameters(path));
 }
 
 }  // namespace sylva::env

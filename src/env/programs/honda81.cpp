@@ -21,49 +21,29 @@
 #include <cmath>
 #include <iostream>
 
-#include "env/programs/collision_parameter_file.h"
-#include "env/programs/collision_program_support.h"
 #include "env/programs/grid_uniform.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
+#include "env/programs/radius_parameters.h"
 
 namespace sylva::env {
 namespace {
 
-using namespace collision;
+using collision::Point3;
+using collision::UniformGrid;
 
 constexpr const char* kProgram = "honda81";
 
-struct Honda81Parameters {
-  float radius = 0;
-  bool three_d = false;
-  bool verbose = false;
-};
-
-Honda81Parameters read_honda81_parameters(const std::filesystem::path& path) {
-  ParameterFile file(path, kProgram, {"radius", "3d case", "verbose"});
-  Honda81Parameters parameters;
-  const ParameterCommand& radius = file.require("radius", "radius: 0.5");
-  parameters.radius = radius.number();
-  if (!(parameters.radius > 0) || !std::isfinite(parameters.radius))
-    radius.fail(radius.values()[0], "expected a radius greater than 0, found '" + radius.values()[0].text + "'");
-  if (const ParameterCommand* three_d = file.find("3d case")) parameters.three_d = three_d->flag();
-  if (const ParameterCommand* verbose = file.find("verbose")) parameters.verbose = verbose->flag();
-  return parameters;
-}
-
 class Honda81 : public Field {
  public:
-  Honda81(ProgramInvocation invocation, Honda81Parameters parameters)
+  Honda81(ProgramInvocation invocation, RadiusParameters parameters)
       : invocation_(std::move(invocation)), parameters_(parameters) {}
 
   void answer(std::span<const Query> queries, std::span<Answer> answers, int step) override {
     // The objects: queries with at least the vigor parameter.
-    std::vector<std::size_t> query_of;
-    for (std::size_t q = 0; q < queries.size(); ++q)
-      if (!queries[q].module.parameters.empty()) query_of.push_back(q);
+    std::vector<std::size_t> query_of = queries_with_parameters(queries);
     if (query_of.empty()) return;
-    require_turtle_values(invocation_, kProgram, "turtle position", queries[query_of[0]].turtle.position_count,
-                          parameters_.three_d ? 3 : 2);
+    require_turtle_position(invocation_, kProgram, queries[query_of[0]], parameters_.three_d);
 
     std::size_t count = query_of.size();
     std::vector<Point3> centres(count);
@@ -95,14 +75,14 @@ class Honda81 : public Field {
 
  private:
   ProgramInvocation invocation_;
-  Honda81Parameters parameters_;
+  RadiusParameters parameters_;
 };
 
 }  // namespace
 
 std::unique_ptr<Field> make_honda81(const ProgramInvocation& invocation) {
-  using namespace collision;
-  return std::make_unique<Honda81>(invocation, read_honda81_parameters(parameter_file_path(invocation, kProgram)));
+  std::filesystem::path path = parameter_file_path(invocation, kProgram, ParameterDialect::collision);
+  return std::make_unique<Honda81>(invocation, read_radius_parameters(path, kProgram, "radius: 0.5"));
 }
 
 }  // namespace sylva::env

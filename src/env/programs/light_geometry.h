@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -10,6 +11,8 @@ namespace sylva::env::light {
 struct Vec3 {
   double x = 0, y = 0, z = 0;
 };
+
+inline Vec3 to_vec3(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
 
 inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }

@@ -24,8 +24,7 @@
 
 #include "env/programs/light_columns.h"
 #include "env/programs/light_parallel.h"
-#include "env/programs/light_parameter_file.h"
-#include "env/programs/light_queries.h"
+#include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
 #include "env/programs/takenaka_parameters.h"
 
@@ -79,20 +78,17 @@ class Takenaka : public Field {
     spheres.reserve(queries.size());
     for (const Query& q : queries) {
       if (q.module.parameters.size() < 2) {
-        std::ostringstream message;
-        message << "takenaka: module " << q.module.symbol << " number " << q.id << " has "
-                << q.module.parameters.size()
-                << " parameters; expected 4 (the cluster's area, its maintenance cost, and two more)";
-        throw std::runtime_error(message.str());
+        fail_module("takenaka", q,
+                    "has " + std::to_string(q.module.parameters.size()) +
+                        " parameters; expected 4 (the cluster's area, its maintenance cost, and two more)");
       }
       double area = q.module.parameters[0];
       if (area < 0) {
-        std::ostringstream message;
-        message << "takenaka: module " << q.module.symbol << " number " << q.id << " gives the area " << area
-                << "; expected 0 or more";
-        throw std::runtime_error(message.str());
+        std::ostringstream problem;
+        problem << "gives the area " << area << "; expected 0 or more";
+        fail_module("takenaka", q, problem.str());
       }
-      spheres.push_back({light::query_position(q, "takenaka"), p_.sparsity * std::sqrt(area / std::numbers::pi)});
+      spheres.push_back({light::to_vec3(turtle_position(q, "takenaka")), p_.sparsity * std::sqrt(area / std::numbers::pi)});
     }
     return spheres;
   }
@@ -120,7 +116,7 @@ class Takenaka : public Field {
 }  // namespace
 
 std::unique_ptr<Field> make_takenaka(const ProgramInvocation& invocation) {
-  return std::make_unique<Takenaka>(read_takenaka_parameters(light::parameter_file_path(invocation, "takenaka")));
+  return std::make_unique<Takenaka>(read_takenaka_parameters(parameter_file_path(invocation, "takenaka", ParameterDialect::light)));
 }
 
 }  // namespace sylva::env
