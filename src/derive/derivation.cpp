@@ -198,7 +198,12 @@ void Derivation::step() {
     else derive_backward();
   }
   if (string_.size_bytes() > 0)
-    growth_ = std::max(1.0, static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()));
+    // Capped: a step that grew a tiny string into a big one (an axiom that
+    // sets up a whole field) says nothing about the next step, and the
+    // reservation it would ask for can exceed memory. The buffer grows by
+    // itself past the reservation.
+    growth_ = std::clamp(static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0,
+                         kMaxGrowthReserved);
   std::swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;

@@ -175,7 +175,8 @@ class Derivation {
   ReactionSet reactions_;
   ReactionSet* gathering_reactions_ = nullptr;  // set while a Gillespie step runs bodies
   ModuleString reaction_scratch_;               // where those bodies write
-  double growth_ = 1.5;  // bytes after / before the last step
+  static constexpr double kMaxGrowthReserved = 8;
+  double growth_ = 1.5;  // bytes after / before the last step, at most kMaxGrowthReserved
 };
 
 }  // namespace sylva::derive
