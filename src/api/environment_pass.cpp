@@ -1,7 +1,9 @@
 #include "api/environment_pass.h"
 
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 #include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
@@ -9,6 +11,68 @@
 
 namespace sylva {
 namespace {
+
+// The numbers in a module's printed parameters ("p1,p2" as ModuleTypes
+// prints them), in order. The registry holds no layout for an L+C module's
+// parameters, so the printed form is read with a tokenizer that knows what
+// format_params writes: numbers (nan and inf among them), vectors "(x,y)",
+// arrays "[a,b]", structs "{name=value,...}" whose field names are labels, not
+// values, quoted strings and "#hex" bytes, which hold no numbers to send.
+class PrintedParameterReader {
+ public:
+  explicit PrintedParameterReader(const std::string& text) : s_(text.c_str()) {}
+
+  std::vector<float> numbers() {
+    std::vector<float> out;
+    while (*s_) {
+      if (is_separator(*s_)) ++s_;
+      else if (*s_ == '"') skip_string();
+      else if (*s_ == '#') skip_bytes();
+      else if (is_name_start(*s_) && skip_label()) continue;
+      else read_number(out);
+    }
+    return out;
+  }
+
+ private:
+  static bool is_separator(char c) { return std::strchr(",()[]{} \t", c) != nullptr; }
+  static bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+  static bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+  // Skips "name=" and says so; a word without '=' (nan, inf) is left to be read as a number.
+  bool skip_label() {
+    const char* end = s_;
+    while (is_name_char(*end)) ++end;
+    if (*end != '=') return false;
+    s_ = end + 1;
+    return true;
+  }
+
+  void skip_string() {
+    for (++s_; *s_ && *s_ != '"'; ++s_)
+      if (*s_ == '\\' && s_[1]) ++s_;
+    if (*s_) ++s_;
+  }
+
+  void skip_bytes() {
+    for (++s_; std::isxdigit(static_cast<unsigned char>(*s_)); ++s_) {
+    }
+  }
+
+  // strtod reads "nan", "-nan", "inf" and "-inf" as printf writes them.
+  void read_number(std::vector<float>& out) {
+    char* end = nullptr;
+    const double v = std::strtod(s_, &end);
+    if (end == s_) {
+      ++s_;  // nothing this reader knows: not a number
+      return;
+    }
+    out.push_back(static_cast<float>(v));
+    s_ = end;
+  }
+
+  const char* s_;
+};
 
 // A module's parameters as numbers: a cpfg module's are all floats; an L+C
 // module's are read from its printed form, so ints, doubles, vectors and
@@ -24,42 +88,76 @@ std::vector<float> parameters_as_floats(const ModuleTypes& types, ModuleId id, c
   if (type.param_size == 0) return out;
   std::string text;
   types.format_params(id, params, text);
-  const char* s = text.c_str();
-  while (*s) {
-    if ((*s >= '0' && *s <= '9') || *s == '-' || *s == '+' || *s == '.') {
-      char* end = nullptr;
-      const float v = std::strtof(s, &end);
-      if (end != s) {
-        out.push_back(v);
-        s = end;
-        continue;
-      }
-    }
-    ++s;
-  }
-  return out;
+  return PrintedParameterReader(text).numbers();
 }
 
-// Walks the string with the turtle and notes every communication module.
+// Walks the string with the turtle and notes every communication module of
+// the string. One that an interpretation rule replaces is noted too, with the
+// turtle where its interpretation starts: the string's module is what the
+// answer is written into. Modules the rules produce are not noted: an answer
+// to them would have nowhere to go.
 class QueryCollector : public derive::InterpretedModuleVisitor {
  public:
   QueryCollector(const EnvironmentPass& pass, const env::CommSpec& spec, const turtle::TurtleSettings& settings,
-                 const ModuleTypes& types)
-      : pass_(pass), spec_(spec), types_(types), turtle_(settings, types, nullptr) {}
+                 const ModuleTypes& types, const StringView& string)
+      : pass_(pass),
+        spec_(spec),
+        types_(types),
+        string_(string),
+        cursor_(string.begin),
+        turtle_(settings, types, nullptr) {}
 
   void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) override {
+    // Modules before this one that were never visited were replaced by
+    // rules that produced nothing visible from them.
+    note_replaced_before(source_index);
+    if (!in_string && source_index == cursor_index_) note_string_module();  // a rule's first module
     turtle_.visit(id, params, source_index, in_string);
-    // A module made by an interpretation rule is not in the string: its
-    // answer would have nowhere to go.
+    if (in_string && source_index == cursor_index_) note_string_module();
+  }
+
+  void finish() {
+    note_replaced_before(std::numeric_limits<std::uint32_t>::max());
+    turtle_.finish();
+  }
+
+  struct Target {
+    ModuleId id;
+    unsigned char* params;  // in the string
+    int count;
+  };
+  std::vector<env::Query> queries;
+  std::vector<Target> targets;
+
+ private:
+  void note_replaced_before(std::uint32_t index) {
+    while (cursor_index_ < index && cursor_ < string_.end) note_string_module();
+  }
+
+  // Notes the string's module at the cursor if it communicates, and moves on.
+  void note_string_module() {
+    const ModuleId id = string_.id_at(cursor_);
+    auto* params = const_cast<unsigned char*>(string_.data + cursor_ + sizeof(ModuleId));
     const int count = pass_.parameter_count(id);
-    if (!in_string || count < 0) return;
+    if (count >= 0) note(id, params, count);
+    cursor_ = string_.next(cursor_);
+    ++cursor_index_;
+  }
+
+  void note(ModuleId id, unsigned char* params, int count) {
     env::Query q;
-    q.id = source_index;
+    q.id = cursor_index_;
     q.module.symbol = types_.name(id);
     q.module.parameters.resize(static_cast<std::size_t>(count));
     std::memcpy(q.module.parameters.data(), params, sizeof(float) * static_cast<std::size_t>(count));
+    q.turtle = turtle_state();
+    queries.push_back(std::move(q));
+    targets.push_back(Target{id, params, count});
+  }
+
+  env::TurtleState turtle_state() const {
     const turtle::TurtleInterpreter::Pose pose = turtle_.pose();
-    env::TurtleState& t = q.turtle;
+    env::TurtleState t;
     t.position = {pose.position.x, pose.position.y, pose.position.z};
     t.heading = {pose.heading.x, pose.heading.y, pose.heading.z};
     t.left = {pose.left.x, pose.left.y, pose.left.z};
@@ -72,24 +170,15 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
     t.up_count = spec_.up.count;
     t.line_width_count = spec_.line_width.count;
     t.scale_factor_count = spec_.scale_factor.count;
-    queries.push_back(std::move(q));
-    targets.push_back(Target{id, params, count});
+    return t;
   }
 
-  void finish() { turtle_.finish(); }
-
-  struct Target {
-    ModuleId id;
-    unsigned char* params;  // in the string
-    int count;
-  };
-  std::vector<env::Query> queries;
-  std::vector<Target> targets;
-
- private:
   const EnvironmentPass& pass_;
   const env::CommSpec& spec_;
   const ModuleTypes& types_;
+  const StringView string_;
+  std::size_t cursor_;             // the string's next module not yet noted
+  std::uint32_t cursor_index_ = 0;  // its place in the string
   turtle::TurtleInterpreter turtle_;
 };
 
@@ -97,7 +186,7 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
 
 EnvironmentPass::EnvironmentPass(env::CommSpec spec, const ModuleTypes& types, bool clean_ea20,
                                  const std::string& model_file, std::function<void(const std::string&)> verbose)
-    : spec_(std::move(spec)), clean_ea20_(clean_ea20), verbose_(std::move(verbose)) {
+    : spec_(std::move(spec)), clean_ea20_(clean_ea20), model_file_(model_file), verbose_(std::move(verbose)) {
   counts_.assign(types.size(), -1);
   if (types.cpfg()) {
     for (std::size_t id = 0; id < types.size(); ++id) {
@@ -121,14 +210,14 @@ EnvironmentPass::EnvironmentPass(env::CommSpec spec, const ModuleTypes& types, b
 
 void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSettings& settings, env::Field& field) {
   const ModuleTypes& types = derivation.types();
-  QueryCollector collector(*this, spec_, settings, types);
+  const StringView view = derivation.string().view(types);
+  QueryCollector collector(*this, spec_, settings, types, view);
   derivation.interpret(collector);
   collector.finish();
 
   if (spec_.following_module) {
     // The module after each communication module in the string (not after
     // interpretation rules: the string is what the model rewrites).
-    const StringView view = derivation.string().view(types);
     for (std::size_t k = 0; k < collector.queries.size(); ++k) {
       const auto& target = collector.targets[k];
       const std::size_t at = static_cast<std::size_t>(target.params - view.data) - sizeof(ModuleId);
@@ -142,22 +231,51 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
   }
 
   std::vector<env::Answer> answers(collector.queries.size());
-  field.answer(collector.queries, answers, derivation.steps_done());
+  const int step = derivation.steps_done();
+  field.answer(collector.queries, answers, step);
 
   int answered = 0;
   for (std::size_t k = 0; k < answers.size(); ++k) {
     const auto& target = collector.targets[k];
-    if (clean_ea20_ && target.id == ea20_) std::memset(target.params, 0, sizeof(float) * env::kMaxParameters);
     const env::Answer& answer = answers[k];
+    check_answer(collector.queries[k], answer, step);
+    if (clean_ea20_ && target.id == ea20_) std::memset(target.params, 0, sizeof(float) * env::kMaxParameters);
     if (answer.set.any()) ++answered;
     for (int i = 0; i < target.count; ++i)
       if (answer.set.test(static_cast<std::size_t>(i)))
         std::memcpy(target.params + sizeof(float) * static_cast<std::size_t>(i), &answer.value[i], sizeof(float));
   }
   if (spec_.verbose && verbose_)
-    verbose_("environment: step " + std::to_string(derivation.steps_done()) + ": " +
-             std::to_string(collector.queries.size()) + " communication modules, " + std::to_string(answered) +
-             " answered\n");
+    verbose_("environment: step " + std::to_string(step) + ": " + std::to_string(collector.queries.size()) +
+             " communication modules, " + std::to_string(answered) + " answered\n");
+}
+
+// An answer for a parameter the module lacks is the environment's mistake;
+// dropping it would hide the mistake from whoever wrote the program.
+void EnvironmentPass::check_answer(const env::Query& query, const env::Answer& answer, int step) const {
+  const std::size_t count = query.module.parameters.size();
+  for (std::size_t i = count; i < answer.set.size(); ++i) {
+    if (!answer.set.test(i)) continue;
+    throw ModelError(answerer_location(), answerer() + " answered parameter " + std::to_string(i) + " of module " +
+                                              std::to_string(query.id) + " (" + query.module.symbol +
+                                              "), which has " + std::to_string(count) +
+                                              (count == 1 ? " parameter" : " parameters") +
+                                              ", during the environmental pass after step " + std::to_string(step));
+  }
+}
+
+// The program on the .e file's executable: line, or the embedding program's
+// field when there is no .e file.
+std::string EnvironmentPass::answerer() const {
+  if (spec_.executable.empty()) return "the environment";
+  const std::size_t start = spec_.executable.find_first_not_of(" \t");
+  const std::size_t end = spec_.executable.find_first_of(" \t", start);
+  return "environmental program '" + spec_.executable.substr(start, end - start) + "'";
+}
+
+SourceLocation EnvironmentPass::answerer_location() const {
+  if (spec_.path.empty()) return SourceLocation{model_file_, 0, 0};
+  return SourceLocation{spec_.path, spec_.executable_line, 0};
 }
 
 }  // namespace sylva

@@ -11,6 +11,7 @@
 #include "derive/derivation.h"
 #include "env/comm_spec.h"
 #include "env/field.h"
+#include "support/diagnostic.h"
 #include "turtle/turtle_settings.h"
 
 namespace sylva {
@@ -26,6 +27,7 @@ class EnvironmentPass {
                   std::function<void(const std::string&)> verbose = {});
 
   // One pass over the derivation's current string, answered by `field`.
+  // Throws ModelError if the field answers a parameter a module lacks.
   void run(derive::Derivation& derivation, const turtle::TurtleSettings& settings, env::Field& field);
 
   // Parameters of a communication module of type `id` (1, 2, 20, or a ?E's
@@ -33,8 +35,13 @@ class EnvironmentPass {
   int parameter_count(ModuleId id) const { return id < counts_.size() ? counts_[id] : -1; }
 
  private:
+  void check_answer(const env::Query& query, const env::Answer& answer, int step) const;
+  std::string answerer() const;
+  SourceLocation answerer_location() const;
+
   env::CommSpec spec_;
   bool clean_ea20_;
+  std::string model_file_;  // names the model in errors without a .e file
   std::function<void(const std::string&)> verbose_;
   std::vector<int> counts_;  // by module id
   ModuleId ea20_ = abi::kNoModule;

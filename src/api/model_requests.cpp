@@ -40,9 +40,7 @@ void ModelRequests::request(int request, int value, const char* file) {
       display_requested_ = true;
       break;
     case abi::kRequestUseView:
-      if (value < 0)
-        throw ModelError(SourceLocation{simulation_.model_path(), 0, 0},
-                         "UseView(" + std::to_string(value) + "): views are numbered from 0");
+      check_view(value);
       if (std::find(views_.begin(), views_.end(), value) == views_.end()) {
         views_.push_back(value);
         std::sort(views_.begin(), views_.end());
@@ -51,6 +49,25 @@ void ModelRequests::request(int request, int value, const char* file) {
     default:
       break;
   }
+}
+
+// A view is a window: command of the view file (manual 6.4); any other
+// number would be drawn as a full-size image of no window.
+void ModelRequests::check_view(int view) const {
+  const auto& view_file = simulation_.inputs().view;
+  const std::size_t windows = view_file ? view_file->windows.size() : 0;
+  if (view >= window_view(0) && view < window_view(windows)) return;
+  std::string defined;
+  if (!view_file)
+    defined = "there is no view file, so no window: commands";
+  else if (windows == 0)
+    defined = "the view file defines no windows";
+  else
+    defined = "the view file defines " + std::to_string(windows) + " window" + (windows == 1 ? "" : "s") +
+              ", views " + std::to_string(window_view(0)) +
+              (windows == 1 ? std::string() : " to " + std::to_string(window_view(windows - 1)));
+  throw ModelError(SourceLocation{simulation_.model_path(), 0, 0},
+                   "UseView(" + std::to_string(view) + "): no such view; " + defined);
 }
 
 void ModelRequests::on_phase(derive::Derivation::Phase phase, bool stopped) {

@@ -30,6 +30,7 @@ class ModelRequests {
  private:
   void request(int request, int value, const char* file);
   std::string file_name(const char* file, const char* function) const;
+  void check_view(int view) const;
 
   Simulation& simulation_;
   std::vector<int> views_;

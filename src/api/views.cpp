@@ -9,8 +9,10 @@ namespace {
 
 const io::ViewWindow* window_of(const Simulation& simulation, int view) {
   const auto& view_file = simulation.inputs().view;
-  if (!view_file || view < 0 || view >= static_cast<int>(view_file->windows.size())) return nullptr;
-  return &view_file->windows[static_cast<std::size_t>(view)];
+  if (!view_file) return nullptr;
+  for (std::size_t k = 0; k < view_file->windows.size(); ++k)
+    if (window_view(k) == view) return &view_file->windows[k];
+  return nullptr;
 }
 
 std::string path_for_view(const std::string& path, const std::string& name) {
@@ -45,7 +47,7 @@ std::vector<std::string> view_name_defines(const io::InputFiles& inputs) {
   std::vector<std::string> defines;
   if (!inputs.view) return defines;
   for (std::size_t k = 0; k < inputs.view->windows.size(); ++k)
-    defines.push_back(inputs.view->windows[k].name + "=" + std::to_string(k));
+    defines.push_back(inputs.view->windows[k].name + "=" + std::to_string(window_view(k)));
   return defines;
 }
 

@@ -2,7 +2,9 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -134,7 +136,16 @@ int main(int argc, char** argv) {
       ->type_name("FILE.e");
   run->add_option("--env-timeout", r.environment.timeout_seconds,
                   "Seconds an environmental program may take to answer one pass before it is stopped (default 60)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Validator(
+          [](std::string& value) -> std::string {
+            // inf and nan parse as numbers; neither is a time limit.
+            char* end = nullptr;
+            const double seconds = std::strtod(value.c_str(), &end);
+            if (end == value.c_str() || *end != '\0' || !std::isfinite(seconds) || seconds <= 0)
+              return "expected a positive number of seconds, got '" + value + "'";
+            return {};
+          },
+          "SECONDS"))
       ->type_name("SECONDS");
   run->add_flag("--clean-ea20,--cleanEA20", r.environment.clean_ea20,
                 "Zero EA20's values before the environment's answers are written (lpfg's -cleanEA20)");

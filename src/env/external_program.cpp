@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,16 @@ namespace sylva::env {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Seconds since construction as a double: limits are compared in seconds, so
+// a huge --env-timeout never overflows the clock's integer ticks.
+class Stopwatch {
+ public:
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  Clock::time_point start_ = Clock::now();
+};
 
 void append_float(std::string& out, float v) {
   char buffer[32];
@@ -63,6 +74,11 @@ ssize_t write_without_sigpipe(int fd, const char* data, std::size_t size) {
   pthread_sigmask(SIG_SETMASK, &old, nullptr);
   errno = error;
   return n;
+}
+
+// "1 parameter", "2 parameters".
+std::string parameter_count_text(std::size_t count) {
+  return std::to_string(count) + (count == 1 ? " parameter" : " parameters");
 }
 
 std::string shortened(const std::string& line) {
@@ -126,10 +142,11 @@ struct ExternalProgramField::Process {
       write_without_sigpipe(to_program, exit_line, sizeof exit_line - 1);
     }
     close_pipes();
-    const auto deadline = Clock::now() + std::chrono::duration<double>(kill ? 0.0 : timeout_seconds);
+    const Stopwatch since_exit;
+    const double limit = kill ? 0.0 : timeout_seconds;
     int status = 0;
     while (::waitpid(pid, &status, WNOHANG) == 0) {
-      if (Clock::now() >= deadline) {
+      if (since_exit.seconds() >= limit) {
         ::kill(pid, SIGKILL);
         ::waitpid(pid, &status, 0);
         break;
@@ -139,53 +156,82 @@ struct ExternalProgramField::Process {
     pid = -1;
   }
 
+  // Hands every complete line received to `on_line` until one equals
+  // `last`; true when it came (the lines after it stay for later).
+  template <class OnLine>
+  bool take_lines(const std::string& last, OnLine& on_line) {
+    std::size_t newline;
+    while ((newline = received.find('\n')) != std::string::npos) {
+      std::string line = received.substr(0, newline);
+      received.erase(0, newline + 1);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (line == last) return true;
+      on_line(line);
+    }
+    return false;
+  }
+
+  [[noreturn]] void fail_timeout(const std::string& during) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", timeout_seconds);
+    fail("did not answer within " + std::string(seconds) + " seconds " + during +
+         " (it was stopped; --env-timeout sets the limit)");
+  }
+
+  // Writes what the pipe takes of `text` from `written` on. A program that
+  // closed its input makes `can_write` false: its output then tells why.
+  void write_some(const std::string& text, std::size_t& written, bool& can_write) {
+    const ssize_t n = write_without_sigpipe(to_program, text.data() + written, text.size() - written);
+    if (n > 0) written += static_cast<std::size_t>(n);
+    else if (n < 0 && errno != EAGAIN && errno != EINTR) can_write = false;
+  }
+
+  // Appends what the program sent to `received`; false at the end of its output.
+  bool read_some(const std::string& during, bool answered) {
+    char buffer[65536];
+    const ssize_t n = ::read(from_program, buffer, sizeof buffer);
+    if (n > 0) {
+      received.append(buffer, static_cast<std::size_t>(n));
+      return true;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) return true;
+    // A program that ends after answering has done its part of this pass;
+    // the next one reports it.
+    if (answered) return false;
+    fail(exit_description() + " " + during);
+  }
+
   // Sends `text` while handing each line the program sends to `on_line`,
-  // until it sends a line equal to `last`.
+  // until it has sent a line equal to `last` and all of `text` is written.
+  // The protocol lets a program send `last` before it has read everything:
+  // stopping the writing then would leave the rest of `text` unsent and the
+  // next exchange would start in the middle of a line.
   template <class OnLine>
   void exchange(const std::string& text, const std::string& last, const std::string& during, OnLine&& on_line) {
-    const auto deadline = Clock::now() + std::chrono::duration<double>(timeout_seconds);
+    const Stopwatch since_start;
     std::size_t written = 0;
     bool can_write = true;
+    bool answered = false;
     for (;;) {
-      // Complete lines already received.
-      std::size_t newline;
-      while ((newline = received.find('\n')) != std::string::npos) {
-        std::string line = received.substr(0, newline);
-        received.erase(0, newline + 1);
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line == last) return;
-        on_line(line);
-      }
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) {
-        char seconds[32];
-        std::snprintf(seconds, sizeof seconds, "%g", timeout_seconds);
-        fail("did not answer within " + std::string(seconds) + " seconds " + during +
-             " (it was stopped; --env-timeout sets the limit)");
-      }
+      if (!answered) answered = take_lines(last, on_line);
+      const bool writing = can_write && written < text.size();
+      if (answered && !writing) return;
+      const double left = timeout_seconds - since_start.seconds();
+      if (left <= 0) fail_timeout(during);
       pollfd fds[2];
       nfds_t count = 0;
       fds[count++] = pollfd{from_program, POLLIN, 0};
-      if (can_write && written < text.size()) fds[count++] = pollfd{to_program, POLLOUT, 0};
-      const int ready = ::poll(fds, count, static_cast<int>(std::min<long long>(left, 1000)));
+      if (writing) fds[count++] = pollfd{to_program, POLLOUT, 0};
+      // At most a second at a time: the deadline is checked between waits,
+      // and no timeout however large overflows the wait.
+      const int wait_ms = static_cast<int>(std::ceil(std::min(left, 1.0) * 1000));
+      const int ready = ::poll(fds, count, wait_ms);
       if (ready < 0) {
         if (errno == EINTR) continue;
         fail(std::string("could not be waited for: ") + std::strerror(errno));
       }
-      if (count > 1 && (fds[1].revents & (POLLOUT | POLLERR | POLLHUP))) {
-        const ssize_t n = write_without_sigpipe(to_program, text.data() + written, text.size() - written);
-        if (n > 0) written += static_cast<std::size_t>(n);
-        else if (n < 0 && errno != EAGAIN && errno != EINTR) can_write = false;  // gone: its output tells why
-      }
-      if (fds[0].revents & (POLLIN | POLLERR | POLLHUP)) {
-        char buffer[65536];
-        const ssize_t n = ::read(from_program, buffer, sizeof buffer);
-        if (n > 0) {
-          received.append(buffer, static_cast<std::size_t>(n));
-        } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
-          fail(exit_description() + " " + during);
-        }
-      }
+      if (count > 1 && (fds[1].revents & (POLLOUT | POLLERR | POLLHUP))) write_some(text, written, can_write);
+      if ((fds[0].revents & (POLLIN | POLLERR | POLLHUP)) && !read_some(during, answered)) return;
     }
   }
 };
@@ -328,6 +374,10 @@ void ExternalProgramField::answer(std::span<const Query> queries, std::span<Answ
     const auto found = by_id.find(id);
     if (found == by_id.end())
       p.fail("answered module " + std::to_string(id) + ", which was not asked about, " + during);
+    const ModuleRecord& module = queries[found->second].module;
+    if (static_cast<std::size_t>(index) >= module.parameters.size())
+      p.fail("answered parameter " + std::to_string(index) + " of module " + std::to_string(id) + " (" +
+             module.symbol + "), which has " + parameter_count_text(module.parameters.size()) + ", " + during);
     answers[found->second].assign(static_cast<int>(index), value);
   });
 }

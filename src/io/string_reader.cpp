@@ -1,6 +1,7 @@
 #include "io/string_reader.h"
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -121,12 +122,34 @@ ModuleString parse_string(const std::string& text, const ModuleTypes& types, con
   return StringReader(text, types, path).read();
 }
 
-ModuleString read_string_file(const std::string& path, const ModuleTypes& types) {
+namespace {
+
+[[noreturn]] void cannot_read(const std::string& path, const std::string& why) {
+  throw ModelError(SourceLocation{path, 0, 0}, "cannot read the saved string: " + why);
+}
+
+// The file's text. A directory opens as a stream on Linux and reads as
+// nothing, so it is checked for by name; any other failed read is an error
+// too rather than an empty string.
+std::string read_text(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) cannot_read(path, "it is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(SourceLocation{path, 0, 0}, "cannot read the saved string: no such file");
+  if (!in) cannot_read(path, "no such file");
   std::stringstream text;
   text << in.rdbuf();
-  return parse_string(text.str(), types, path);
+  if (in.bad()) cannot_read(path, "the file could not be read");
+  return text.str();
+}
+
+}  // namespace
+
+ModuleString read_string_file(const std::string& path, const ModuleTypes& types) {
+  const std::string text = read_text(path);
+  // OutputString writes even a string of no modules as a line ("\n"), so a
+  // file without a single byte was not written by it.
+  if (text.empty()) cannot_read(path, "the file is empty (a saved string, even one of no modules, is a line)");
+  return parse_string(text, types, path);
 }
 
 }  // namespace sylva::io

@@ -204,7 +204,8 @@ geometry::Rgb Parser::color(WordReader& in, std::string_view what) {
   return {v.x, v.y, v.z};
 }
 
-// A number, or the name of a window: command (windows count from 0).
+// A number, or the name of a window: command (windows count from 1, as
+// the model's view names do: view 0 is no window, LPFG manual 5.12).
 int Parser::view_id(WordReader& in) {
   Word at = in.next("a view id");
   if (std::optional<int> id = parse_int(at.text)) {
@@ -212,7 +213,7 @@ int Parser::view_id(WordReader& in) {
     return *id;
   }
   for (std::size_t i = 0; i < view_.windows.size(); ++i)
-    if (view_.windows[i].name == at.text) return static_cast<int>(i);
+    if (view_.windows[i].name == at.text) return static_cast<int>(i) + 1;
   in.fail(at, "expected a view id (a number, or a name given by an earlier window: command), found '" + at.text + "'");
 }
 

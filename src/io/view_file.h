@@ -60,7 +60,7 @@ struct RenderSettings {
 
 // window: (7.3): a view's place in the image, relative to its size.
 struct ViewWindow {
-  std::string name;  // its id is its position among the windows, from 0
+  std::string name;  // its id is its position among the windows, from 1
   float left = 0, top = 0, width = 1, height = 1;
 };
 

@@ -296,9 +296,19 @@ class LcParser {
 
   // VerifyString: A B [ C ]; (LPFG manual 10.4): module names; parameters
   // may be written but are not compared.
+  // A second statement is an error: two would otherwise join into one
+  // expected string that neither of them states.
   void parse_verify_string() {
     flush_code();
-    next();  // VerifyString
+    const Token& keyword = next();  // VerifyString
+    if (model_.has_verify_string) {
+      const SourceLocation& first = first_verify_string_;
+      const SourceLocation here = stream_.location(keyword);
+      fail(keyword, "only one VerifyString: per model; the first is at " +
+                        (first.file == here.file ? std::string() : first.file + ":") + "line " +
+                        std::to_string(first.line));
+    }
+    first_verify_string_ = stream_.location(keyword);
     next();  // :
     model_.has_verify_string = true;
     while (!peek().is_punct(";")) {
@@ -724,6 +734,7 @@ class LcParser {
   std::unordered_set<int> regular_groups_{0}, gillespie_groups_;
   int view_ = 0;
   int filter_ = -1;
+  SourceLocation first_verify_string_;
 };
 
 }  // namespace

@@ -131,7 +131,11 @@ TEST(SavedStrings, MalformedSavedStringsAreErrorsAtTheirLineAndColumn) {
       {"Apex(1,x)\n", "bad.str:1:8: error: ", "expected an integer in the parameters of 'Apex'"},
       {"C({id=0,mass=1,age=0,divided=2},0,(0,0,0))\n", "bad.str:1:30: error: ", "expected 0 or 1"},
       {"C({id=0,weight=1},0,(0,0,0))\n", "bad.str:1:9: error: ", "expected a field of Cell"},
-      {"C({id=0},0,(0,0))\n", "bad.str:1:16: error: ", "expected ','"},
+      {"C({id=0,mass=1,age=0,divided=0},0,(0,0))\n", "bad.str:1:39: error: ", "expected ','"},
+      // Cell has the fields id, mass, age, divided: each must be given once.
+      {"C({id=0},0,(0,0,0))\n", "bad.str:1:8: error: ", "expected field 'mass'"},
+      {"C({},0,(0,0,0))\n", "bad.str:1:4: error: ", "expected field 'id'"},
+      {"C({mass=1,age=0,divided=0,id=1,age=2},0,(0,0,0))\n", "bad.str:1:32: error: ", "expected field 'age' only once"},
       {"Apex(1,0\n", "bad.str:1:5: error: ", "expected ')'"},
   };
   for (const Case& c : cases) {
@@ -142,6 +146,33 @@ TEST(SavedStrings, MalformedSavedStringsAreErrorsAtTheirLineAndColumn) {
   }
   ProcessResult missing = run_sylva({"run", kStringIo, "--axiom-from", "none.str"}, dir);
   EXPECT_TRUE(FailsWith(missing, "none.str: error: ", "cannot read the saved string"));
+}
+
+TEST(SavedStrings, ADirectoryOrAnEmptyFileIsNoSavedString) {
+  const std::string dir = test_dir();
+  fs::create_directories(dir + "/folder.str");
+  EXPECT_TRUE(FailsWith(run_sylva({"run", kStringIo, "--axiom-from", "folder.str"}, dir), "folder.str: error: ",
+                        "cannot read the saved string: it is a directory"));
+  write_file(dir + "/empty.str", "");
+  EXPECT_TRUE(FailsWith(run_sylva({"run", kStringIo, "--axiom-from", "empty.str"}, dir), "empty.str: error: ",
+                        "the file is empty"));
+  // LoadString("saved.str") in Start, saved.str being a folder.
+  fs::create_directories(dir + "/saved.str");
+  ProcessResult r = run_sylva({"run", kStringIo, "-D", "LOAD", "--string", "out.txt"}, dir);
+  EXPECT_TRUE(FailsWith(r, "saved.str: error: ", "cannot read the saved string: it is a directory"));
+  EXPECT_FALSE(fs::exists(dir + "/out.txt"));
+}
+
+TEST(SavedStrings, AStringOfNoModulesIsSavedAsALineAndReadsBack) {
+  const std::string dir = test_dir();
+  write_file(dir + "/model.l",
+             "module A;\n"
+             "derivation length: 1;\n"
+             "axiom: A;\n"
+             "A : { produce; }\n");
+  run_ok({"run", "model.l", "--string", "none.str"}, dir);
+  EXPECT_EQ(read_text(dir + "/none.str"), "\n");
+  EXPECT_EQ(run_ok({"run", "model.l", "--axiom-from", "none.str", "--steps", "0"}, dir), "\n");
 }
 
 TEST(SavedStrings, LoadStringOfAMalformedFileStopsTheRun) {
@@ -218,6 +249,50 @@ TEST(MultiView, EachViewIsAFileOfItsOwnDrawnWithItsVgroup) {
   EXPECT_EQ(read_png(dir + "/step2-Crown.png").width, 100);
 }
 
+TEST(MultiView, WindowsAreViewsFromOne) {
+  // Vgroup 0 is no window (LPFG manual 5.12, footnote 3): the names of the
+  // window: commands are 1, 2, ... in order.
+  const std::string dir = test_dir();
+  write_file(dir + "/model.v", "window: Main 0 0 1 1\nwindow: Small 0 0 0.5 0.5\n");
+  write_file(dir + "/model.l", "module R(int);\naxiom: R(Main) R(Small);\n");
+  EXPECT_EQ(run_ok({"run", "model.l", "model.v"}, dir), "R(1) R(2)\n");
+}
+
+TEST(MultiView, QueryModulesUseTheRulesOfVgroupZero) {
+  // The first window is view 1, whose vgroup draws L as F(5); the query pass
+  // uses vgroup 0, the rules outside any vgroup, which draw it as F(2): the
+  // turtle, heading up, is at height 2 at GetPos.
+  const std::string dir = test_dir();
+  write_file(dir + "/model.v", "window: Stem 0 0 0.5 1\nwindow: Crown 0.5 0 0.5 1\n");
+  write_file(dir + "/model.l",
+             "module L;\nmodule A;\nmodule R(float);\n"
+             "derivation length: 2;\n"
+             "Start: { UseView(Stem); UseView(Crown); }\n"
+             "axiom: L A;\n"
+             "A : { produce GetPos(0,0,0); }\n"
+             "GetPos(x,y,z) : { produce R(y); }\n"
+             "interpretation:\n"
+             "L : { produce F(2); }\n"
+             "vgroup Stem:\n"
+             "L : { produce F(5); }\n"
+             "vgroup Crown:\n"
+             "L : { produce F(7); }\n"
+             "endgroup\n");
+  EXPECT_EQ(run_ok({"run", "model.l", "model.v"}, dir), "L R(2)\n");
+}
+
+TEST(MultiView, UseViewOfNoWindowIsAnError) {
+  const std::string dir = test_dir();
+  write_file(dir + "/model.v", "window: Main 0 0 0.5 1\nwindow: Side 0.5 0 0.5 1\n");
+  write_file(dir + "/model.l", "module L;\nStart: { UseView(Main); UseView(5); }\naxiom: L;\n");
+  ProcessResult r = run_sylva({"run", "model.l", "model.v", "-o", "plant.png"}, dir);
+  EXPECT_TRUE(FailsWith(r, "model.l: error: ", "UseView(5): no such view; the view file defines 2 windows, views 1 to 2"));
+  EXPECT_FALSE(fs::exists(dir + "/plant-view5.png"));
+  write_file(dir + "/zero.l", "module L;\nStart: { UseView(0); }\naxiom: L;\n");
+  EXPECT_TRUE(FailsWith(run_sylva({"run", "zero.l", "model.v"}, dir), "zero.l: error: ", "UseView(0): no such view"));
+  EXPECT_TRUE(FailsWith(run_sylva({"run", "zero.l"}, dir), "zero.l: error: ", "there is no view file"));
+}
+
 TEST(MultiView, WithoutUseViewOnlyViewZeroIsDrawn) {
   const std::string dir = test_dir();
   write_file(dir + "/model.v", "window: Main 0 0 1 1\nwindow: Small 0 0 0.5 0.5\n");
@@ -262,6 +337,17 @@ TEST(VerifyString, AMismatchFailsAndWritesBothStrings) {
   EXPECT_EQ(read_text(dir + "/Verify_verify-string.l_expected.txt"), "I SB B EB A\n");
   EXPECT_EQ(read_text(dir + "/Verify_verify-string.l_actual.txt"), "I SB B EB I SB B EB A\n");
   EXPECT_FALSE(fs::exists(dir + "/out.txt"));
+}
+
+TEST(VerifyString, ASecondStatementIsAnError) {
+  const std::string dir = test_dir();
+  write_file(dir + "/model.l",
+             "module A;\n"
+             "axiom: A;\n"
+             "VerifyString: A;\n"
+             "  VerifyString: A A;\n");
+  EXPECT_TRUE(FailsWith(run_sylva({"run", "model.l"}, dir), "model.l:4:3: error: ",
+                        "only one VerifyString: per model; the first is at line 3"));
 }
 
 TEST(VerifyString, FewerStepsAreAMismatch) {

@@ -4,7 +4,10 @@
 // EA20 and cpfg's ?E, Environment()/NoEnvironment() and --clean-ea20.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -22,7 +25,7 @@ namespace {
 
 // Records every pass and answers each query with the turtle's state:
 // parameter 0..2 the position, 3..5 the heading, 6..8 left, 9..11 up, 12 the
-// line width, 13 the scale factor (a module keeps what fits its parameters).
+// line width, 13 the scale factor (as many as the module has parameters).
 class EchoField : public env::Field {
  public:
   void answer(std::span<const env::Query> queries, std::span<env::Answer> answers, int step) override {
@@ -30,11 +33,13 @@ class EchoField : public env::Field {
     passes.emplace_back(queries.begin(), queries.end());
     for (std::size_t k = 0; k < queries.size(); ++k) {
       const env::TurtleState& t = queries[k].turtle;
-      const std::array<float, 3>* vectors[] = {&t.position, &t.heading, &t.left, &t.up};
-      for (int v = 0; v < 4; ++v)
-        for (int i = 0; i < 3; ++i) answers[k].assign(3 * v + i, (*vectors[v])[static_cast<std::size_t>(i)]);
-      answers[k].assign(12, t.line_width);
-      answers[k].assign(13, t.scale_factor);
+      std::vector<float> values;
+      for (const std::array<float, 3>* v : {&t.position, &t.heading, &t.left, &t.up})
+        values.insert(values.end(), v->begin(), v->end());
+      values.push_back(t.line_width);
+      values.push_back(t.scale_factor);
+      const std::size_t count = std::min(values.size(), queries[k].module.parameters.size());
+      for (std::size_t i = 0; i < count; ++i) answers[k].assign(static_cast<int>(i), values[i]);
     }
   }
   void finish() override { ++finished; }
@@ -259,6 +264,93 @@ TEST(EnvironmentPass, ACpfgCommunicationModuleCarriesAtMostTwentyParameters) {
   SimulationOptions plain;
   plain.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   EXPECT_NO_THROW(Simulation(model, plain));
+}
+
+// The following module's parameters as numbers: a struct's field names are
+// labels, however many digits they hold, and NaN and infinity are values.
+TEST(EnvironmentPass, FollowingStructParametersGiveTheirValuesOnly) {
+  auto field = std::make_shared<EchoField>();
+  Simulation s(write_model("following-struct", R"(#include <lpfgall.h>
+#include <limits>
+struct Pair { int x2; float y10; };
+module S(Pair);
+module N(float, double);
+Pair pair() { Pair p; p.x2 = 7; p.y10 = 1.5f; return p; }
+float not_a_number() { return std::numeric_limits<float>::quiet_NaN(); }
+double minus_infinity() { return -std::numeric_limits<double>::infinity(); }
+derivation length: 0;
+axiom: E1(0) S(pair()) E1(0) N(not_a_number(), minus_infinity());
+)"),
+               options_with(field));
+  s.derivation().run();
+  ASSERT_EQ(field->passes.size(), 1u);
+  const std::vector<env::Query>& q = field->passes[0];
+  ASSERT_EQ(q.size(), 2u);
+  EXPECT_EQ(q[0].following.symbol, "S");
+  EXPECT_EQ(q[0].following.parameters, (std::vector<float>{7, 1.5f}));
+  EXPECT_EQ(q[1].following.symbol, "N");
+  ASSERT_EQ(q[1].following.parameters.size(), 2u);
+  EXPECT_TRUE(std::isnan(q[1].following.parameters[0]));
+  EXPECT_EQ(q[1].following.parameters[1], -std::numeric_limits<float>::infinity());
+}
+
+// Sets parameter `index` of every query.
+class IndexField : public env::Field {
+ public:
+  explicit IndexField(int index) : index_(index) {}
+  void answer(std::span<const env::Query>, std::span<env::Answer> answers, int) override {
+    for (env::Answer& a : answers) a.assign(index_, 1);
+  }
+
+ private:
+  int index_;
+};
+
+TEST(EnvironmentPass, AnAnswerForAMissingParameterIsAnError) {
+  const std::string model = write_model("missing-parameter", "#include <lpfgall.h>\naxiom: F(1) E1(0);\n");
+  try {
+    Simulation s(model, options_with(std::make_shared<IndexField>(5)));
+    s.derivation().run();
+    FAIL() << "no error";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(std::string(e.what()), model + ": error: the environment answered parameter 5 of module 1 (E1), "
+                                             "which has 1 parameter, during the environmental pass after step 0");
+  }
+  // The last parameter it has is fine.
+  Simulation s(write_model("last-parameter", "#include <lpfgall.h>\naxiom: E2(0,0);\n"),
+               options_with(std::make_shared<IndexField>(1)));
+  s.derivation().run();
+  EXPECT_EQ(string_of(s), "E2(0,1)");
+}
+
+// A communication module that its own interpretation rule replaces is still
+// sent, with the turtle where its interpretation starts, and answered in the
+// string; the E1 the rule produces is not sent. F(2) ends at (0,2,0), where
+// E1's interpretation starts; its F(1) and the next F(1) bring E2 to (0,4,0).
+TEST(EnvironmentPass, AModuleReplacedByItsInterpretationRuleIsSent) {
+  auto field = std::make_shared<EchoField>();
+  Simulation s(write_model("interpreted", R"(#include <lpfgall.h>
+derivation length: 0;
+axiom: F(2) E1(5) F(1) E2(1,2);
+interpretation:
+E1(v) : { produce F(1) E1(v); }
+E2(a,b) : { produce; }
+)"),
+               options_with(field));
+  s.derivation().run();
+  ASSERT_EQ(field->passes.size(), 1u);
+  const std::vector<env::Query>& q = field->passes[0];
+  ASSERT_EQ(q.size(), 2u);
+  EXPECT_EQ(q[0].id, 1u);
+  EXPECT_EQ(q[0].module.symbol, "E1");
+  EXPECT_EQ(q[0].module.parameters, std::vector<float>{5});
+  expect_vector(q[0].turtle.position, {0, 2, 0});
+  EXPECT_EQ(q[0].following.symbol, "F");
+  EXPECT_EQ(q[1].id, 3u);
+  EXPECT_EQ(q[1].module.symbol, "E2");
+  expect_vector(q[1].turtle.position, {0, 4, 0});
+  EXPECT_TRUE(q[1].following.symbol.empty());
+  EXPECT_EQ(string_of(s), "F(2) E1(0) F(1) E2(0,4)");
 }
 
 }  // namespace

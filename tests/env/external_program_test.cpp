@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -167,6 +168,61 @@ TEST(ExternalProgram, AnUnknownProgramIsNamedWithTheLine) {
   EXPECT_EQ(failure(spec_for(f, "./missing")),
             f.dir + "/plant.e:1:13: error: environmental program './missing' not found: no executable file " +
                 f.dir + "/./missing");
+}
+
+TEST(ExternalProgram, AnAnswerForAMissingParameterIsNamed) {
+  const Folder f{make_temp_dir("env-missing-parameter")};
+  f.script("beyond", ready_then("while read line; do case \"$line\" in\n"
+                                "  query*) set -- $line; echo \"$2 1 7\" ;;\n  end) echo end ;;\nesac; done\n"));
+  EXPECT_EQ(failure(spec_for(f, "./beyond")),
+            f.dir + "/plant.e:1: error: environmental program './beyond' answered parameter 1 of module 4 (?E), "
+                    "which has 1 parameter, during the environmental pass after step 1");
+}
+
+// A program that answers every pass at once; `timeout` would overflow the
+// clock's ticks were it added to the time.
+TEST(ExternalProgram, AHugeTimeoutIsNoTimeout) {
+  const Folder f{make_temp_dir("env-huge-timeout")};
+  f.script("quick", ready_then("while read line; do [ \"$line\" = end ] && echo end; done\n"));
+  EXPECT_EQ(failure(spec_for(f, "./quick"), 1e16), "(no error)");
+  EXPECT_EQ(failure(spec_for(f, "./quick"), 1e300), "(no error)");
+}
+
+// A program may send "end" as soon as a pass begins. A pass larger than a
+// pipe holds (5000 queries with their positions: about 150 KB) must still be
+// written whole, or the next pass's "begin" lands in the middle of a line and
+// the program never sees it. The program answers the first E1 (id 1, after
+// the F; the axiom has none) with the step and logs each "begin" it reads.
+TEST(ExternalProgram, AnEarlyEndDoesNotCutTheRestOfAPass) {
+  const Folder f{make_temp_dir("env-early-end")};
+  const std::string model = f.file("big.l", R"(#include <lpfgall.h>
+module A(int);
+derivation length: 3;
+axiom: A(0);
+A(x) : {
+  if (x == 0) { for (int i = 0; i < 5000; ++i) { nproduce F(1) E1(i); } produce A(1); }
+  else produce A(x + 1);
+}
+)");
+  const std::string log = f.dir + "/begins.log";
+  f.script("early", "while IFS= read -r line; do case \"$line\" in\n"
+                    "  end-header) echo ready ;;\n"
+                    "  'begin 0') echo \"$line\" >> " + log + "; echo end ;;\n"
+                    "  begin*) echo \"$line\" >> " + log + "; set -- $line; echo \"1 0 $2\"; echo end ;;\n"
+                    "esac; done\n");
+  const std::string e_file =
+      f.file("early.e", "executable: ./early\ncommunication type: pipes\nturtle position: %g %g %g\n");
+  SimulationOptions options;
+  options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  options.input_files = {e_file};
+  options.environment.timeout_seconds = 10;
+  Simulation s(model, options);
+  s.derivation().run();
+  const std::string text = io::format_string(s.derivation().string(), s.types());
+  EXPECT_EQ(text.substr(0, 15), "F(1) E1(3) F(1)");  // answered in the pass after step 3
+  std::ifstream in(log);
+  const std::string begins((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(begins, "begin 0\nbegin 1\nbegin 2\nbegin 3\n");
 }
 
 TEST(ExternalProgram, ThePassIsSentAsDocumented) {

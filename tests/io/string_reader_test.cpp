@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include "io/string_reader.h"
 #include "support/diagnostic.h"
@@ -74,6 +76,82 @@ TEST(StringReader, ErrorsPointIntoTheSavedText) {
   EXPECT_EQ(error_of("C((1,2)x,1,[1,2])"), "saved.str:1:8: error: expected ',' in the parameters of 'C'");
   EXPECT_EQ(error_of("A(1,2,(1,2,3),1,4)B"), "saved.str:1:19: error: expected a space between modules, found 'B'");
   EXPECT_EQ(error_of("B A(1,2"), "saved.str:1:4: error: expected ')' to close the parameters of 'A'");
+}
+
+// ---- struct fields: every field once --------------------------------------
+
+ModuleTypes mouse_types() {
+  const abi::ModuleType t = rt::module_type<MouseStatus>("M");
+  return ModuleTypes({ModuleTypes::Type{t.name, t.param_size, t.format_params, t.param_count, t.parse_params}});
+}
+
+std::string mouse_error_of(const std::string& text) {
+  try {
+    parse_string(text, mouse_types(), "saved.str");
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+const std::string kAllMouseFields =
+    "viewNum=1,viewX=2,viewY=3,atFront=(0,0,0),atRear=(0,0,0),atMiddle=(0,0,0),lbDown=0,lbPushed=1,lbReleased=0";
+
+TEST(StringReader, AStructWithAllItsFieldsReadsBack) {
+  const ModuleString s = parse_string("M({" + kAllMouseFields + "})", mouse_types(), "s");
+  const MouseStatus m = param_at<MouseStatus>(s, sizeof(ModuleId));
+  EXPECT_EQ(m.viewY, 3);
+  EXPECT_TRUE(m.lbPushed);
+}
+
+TEST(StringReader, AStructFieldLeftOutIsAnErrorAtTheClosingBrace) {
+  // M({viewNum=1}): the '}' is column 13; viewX is the first field not given.
+  EXPECT_EQ(mouse_error_of("M({viewNum=1})"),
+            "saved.str:1:13: error: expected field 'viewX' (a saved struct gives all its fields) in the parameters of "
+            "'M'");
+  EXPECT_EQ(mouse_error_of("M({})"),
+            "saved.str:1:4: error: expected field 'viewNum' (a saved struct gives all its fields) in the parameters of "
+            "'M'");
+  // Fields in another order are still all there.
+  EXPECT_EQ(mouse_error_of("M({lbReleased=0,viewNum=1,viewX=2,viewY=3,atFront=(0,0,0),atRear=(0,0,0),"
+                           "atMiddle=(0,0,0),lbDown=0,lbPushed=1})"),
+            "no error");
+}
+
+TEST(StringReader, AStructFieldGivenTwiceIsAnErrorAtItsSecondName) {
+  // "M({" is columns 1-3, "viewNum=1," 4-13: the second viewNum is at 14.
+  EXPECT_EQ(mouse_error_of("M({viewNum=1,viewNum=2," + kAllMouseFields.substr(10) + "})"),
+            "saved.str:1:14: error: expected field 'viewNum' only once in the parameters of 'M'");
+}
+
+// ---- files ------------------------------------------------------------------
+
+std::string file_error_of(const std::string& path) {
+  try {
+    read_string_file(path, test_types());
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(StringReader, ADirectoryIsNoSavedString) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sylva-string-reader-dir";
+  std::filesystem::create_directories(dir);
+  EXPECT_EQ(file_error_of(dir.string()),
+            dir.string() + ": error: cannot read the saved string: it is a directory, not a file");
+}
+
+TEST(StringReader, AnEmptyFileIsAnErrorAndALineWithoutModulesIsTheEmptyString) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sylva-string-reader-files";
+  std::filesystem::create_directories(dir);
+  const std::string empty = (dir / "empty.str").string(), blank = (dir / "blank.str").string();
+  std::ofstream(empty, std::ios::binary).flush();
+  std::ofstream(blank, std::ios::binary) << "\n";  // what OutputString writes for a string of no modules
+  EXPECT_EQ(file_error_of(empty), empty +
+                                      ": error: cannot read the saved string: the file is empty (a saved string, "
+                                      "even one of no modules, is a line)");
+  EXPECT_TRUE(read_string_file(blank, test_types()).empty());
 }
 
 }  // namespace

@@ -265,7 +265,7 @@ TEST(ViewFileTest, GlobalCommandsHoldForEveryViewAndTheLastOneWins) {
                                 "view: Bottom dir: 1 0 0 scale: 0.5\n"
                                 "box: Top -1 1 -1 1 -1 1\n"
                                 "projection: perspective\n"
-                                "view: 2 1 2 3 0.7 0 0 1\n"  // the deprecated form
+                                "view: 3 1 2 3 0.7 0 0 1\n"  // the deprecated form
                                 "scale factor: 0.6\n"
                                 "front distance: 1\n"
                                 "window border: 3 255 0 51\n"
@@ -275,14 +275,15 @@ TEST(ViewFileTest, GlobalCommandsHoldForEveryViewAndTheLastOneWins) {
   ASSERT_EQ(view.windows.size(), 2u);
   EXPECT_EQ(view.windows[1].name, "Bottom");
   EXPECT_FLOAT_EQ(view.windows[1].top, 0.5f);
-  expect_vec(view.view(1).dir, {1, 0, 0});
-  EXPECT_TRUE(view.view(1).perspective);
-  EXPECT_FLOAT_EQ(view.view(1).scale, 0.6f);  // the later global scale wins
-  ASSERT_TRUE(view.view(0).box.has_value());
-  expect_vec(view.view(0).box->max, {1, 1, 1});
-  expect_vec(view.view(2).pan, {1, 2, 3});
-  expect_vec(view.view(2).up, {0, 0, 1});
-  EXPECT_FALSE(view.view(0).front_distance);  // no back distance: no effect
+  // Windows are views 1 and 2 (view 0 is no window, LPFG manual 5.12).
+  expect_vec(view.view(2).dir, {1, 0, 0});
+  EXPECT_TRUE(view.view(2).perspective);
+  EXPECT_FLOAT_EQ(view.view(2).scale, 0.6f);  // the later global scale wins
+  ASSERT_TRUE(view.view(1).box.has_value());
+  expect_vec(view.view(1).box->max, {1, 1, 1});
+  expect_vec(view.view(3).pan, {1, 2, 3});
+  expect_vec(view.view(3).up, {0, 0, 1});
+  EXPECT_FALSE(view.view(1).front_distance);  // no back distance: no effect
   EXPECT_EQ(view.window_border_width, 3);
   EXPECT_EQ(view.window_border_color, (geometry::Rgb{1, 0, 0.2f}));
   turtle::TurtleSettings t = view.turtle_settings();

@@ -50,11 +50,13 @@ class Chiba : public Field {
     std::vector<Vec3> brightest(spheres.size());
     for (const LightSource& source : sources_) {
       columns_.build(spheres, source.direction, margin);
-      light::parallel_for(spheres.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-        for (std::size_t i = begin; i < end; ++i) {
+      std::span<const std::uint32_t> order = columns_.casting_order();
+      light::parallel_for(order.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+          std::uint32_t i = order[k];
           // pow(t, x1) * pow(t, x2) * ... = pow(t, x1 + x2 + ...)
           double exponent = 0;
-          columns_.for_each_near(static_cast<std::uint32_t>(i), behind, [&](const light::LightColumns::Neighbour& n) {
+          columns_.for_each_near(i, behind, ray_width(spheres[i]), [&](const light::LightColumns::Neighbour& n) {
             exponent += transmittance_exponent(spheres[i], n, spheres[n.sphere]);
           });
           double intensity = source.intensity * transmitted(exponent);
@@ -94,6 +96,13 @@ class Chiba : public Field {
       spheres.push_back({light::to_vec3(turtle_position(q, "chiba")), radius});
     }
     return spheres;
+  }
+
+  // How far beyond its own radius another sphere can be and still dim the
+  // ray of `from`: the beam, or the whole disk of `from` when intersection
+  // areas are estimated.
+  double ray_width(const Sphere& from) const {
+    return p_.estimate_intersection_area ? from.radius : p_.beam_radius * from.radius;
   }
 
   // How much sphere `other`, at `where` from the ray of `from`, dims the ray:

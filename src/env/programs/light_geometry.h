@@ -59,10 +59,16 @@ inline double disk_overlap_area(double a, double b, double d) {
   if (a <= 0 || b <= 0 || d >= a + b) return 0;
   double small = std::min(a, b);
   if (d <= std::abs(a - b)) return std::numbers::pi * small * small;
-  // Two circular segments (the lens).
+  // The lens: two circular sectors less the kite between the two centres and
+  // the two crossing points. Heron's formula gives the kite's area without
+  // the sines of the sector angles.
+  double kite = 0.5 * std::sqrt(std::max(0.0, (-d + a + b) * (d + a - b) * (d - a + b) * (d + a + b)));
+  if (a == b) {  // both sectors alike: one acos
+    return 2 * a * a * std::acos(std::clamp(d / (2 * a), -1.0, 1.0)) - kite;
+  }
   double alpha = std::acos(std::clamp((d * d + a * a - b * b) / (2 * d * a), -1.0, 1.0));
   double beta = std::acos(std::clamp((d * d + b * b - a * a) / (2 * d * b), -1.0, 1.0));
-  return a * a * (alpha - std::sin(2 * alpha) / 2) + b * b * (beta - std::sin(2 * beta) / 2);
+  return a * a * alpha + b * b * beta - kite;
 }
 
 }  // namespace sylva::env::light

@@ -51,10 +51,12 @@ class Takenaka : public Field {
     std::vector<double> flux(spheres.size(), 0);
     for (const LightSource& source : p_.sources) {
       columns_.build(spheres, source.direction, margin);
-      light::parallel_for(spheres.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-        for (std::size_t i = begin; i < end; ++i) {
+      std::span<const std::uint32_t> order = columns_.casting_order();
+      light::parallel_for(order.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+          std::uint32_t i = order[k];
           double intensity = source.intensity;
-          columns_.for_each_near(static_cast<std::uint32_t>(i), 0, [&](const light::LightColumns::Neighbour& n) {
+          columns_.for_each_near(i, 0, p_.beam_radius * spheres[i].radius, [&](const light::LightColumns::Neighbour& n) {
             intensity *= transmitted(spheres[i], n, spheres[n.sphere]);
           });
           flux[i] += intensity;

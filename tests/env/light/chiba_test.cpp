@@ -228,6 +228,76 @@ TEST(ChibaTest, GridGivesTheSameAnswerAsTestingEveryPair) {
     EXPECT_NEAR(a[i].value[0], light_by_every_pair(q, i, 0.3, 0.25, sources), 2e-5) << i;
 }
 
+// Spheres crowded into three crowns, so that every ray passes many others
+// and the grid cells hold long lists.
+std::vector<env::Query> crowded_crowns(int count) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(-1, 1), radius(0.4f, 1.6f);
+  std::vector<env::Query> q;
+  for (int i = 0; i < count; ++i) {
+    float x, y, z;
+    do {
+      x = unit(random), y = unit(random), z = unit(random);
+    } while (x * x + y * y + z * z > 1);
+    float crown = static_cast<float>(i % 3);
+    q.push_back(query_at(9 * crown + 7 * x, 7 * y + 2 * crown, 7 * z, {radius(random)}));
+  }
+  return q;
+}
+
+const std::string kFiveSources = "source direction: 0 1 0 0.3\nsource direction: 0.3 1 -0.2 0.2\n"
+                                 "source direction: -1 0.4 0.7 0.2\nsource direction: 1 0.1 0 0.2\n"
+                                 "source direction: 0.2 -1 0.5 0.1\n";
+const std::vector<std::array<double, 4>> kFiveSourceList{
+    {0, 1, 0, 0.3}, {0.3, 1, -0.2, 0.2}, {-1, 0.4, 0.7, 0.2}, {1, 0.1, 0, 0.2}, {0.2, -1, 0.5, 0.1}};
+
+TEST(ChibaTest, CrowdedGridGivesTheSameAnswerAsTestingEveryPair) {
+  std::vector<env::Query> q = crowded_crowns(3000);
+  auto field = chiba("chiba-crowded", "grid size: 8 8 8\ntransmittance: 0.7\nbeam radius: 0.5\n" + kFiveSources);
+  auto a = answer_all(*field, q);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    EXPECT_NEAR(a[i].value[0], light_by_every_pair(q, i, 0.7, 0.5, kFiveSourceList), 2e-5) << i;
+}
+
+// The same with estimated intersection areas: each sphere ahead dims the ray
+// by the part of the shooting sphere's disk that its own disk covers.
+double area_light_by_every_pair(const std::vector<env::Query>& q, std::size_t i, double t,
+                                const std::vector<std::array<double, 4>>& sources) {
+  auto lens = [](double a, double b, double d) {
+    if (d >= a + b) return 0.0;
+    if (d <= std::abs(a - b)) return std::numbers::pi * std::min(a, b) * std::min(a, b);
+    double alpha = std::acos((d * d + a * a - b * b) / (2 * d * a));
+    double beta = std::acos((d * d + b * b - a * a) / (2 * d * b));
+    return a * a * (alpha - std::sin(2 * alpha) / 2) + b * b * (beta - std::sin(2 * beta) / 2);
+  };
+  double total = 0;
+  for (const auto& s : sources) {
+    double n = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    double exponent = 0;
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      if (j == i) continue;
+      double w[3];
+      for (int k = 0; k < 3; ++k) w[k] = double(q[j].turtle.position[k]) - double(q[i].turtle.position[k]);
+      double along = (w[0] * s[0] + w[1] * s[1] + w[2] * s[2]) / n;
+      if (along <= 0) continue;
+      double h2 = std::max(0.0, w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along);
+      double a = q[i].module.parameters[0], b = q[j].module.parameters[0];
+      exponent += lens(a, b, std::sqrt(h2)) / (std::numbers::pi * a * a);
+    }
+    total += s[3] * std::pow(t, exponent);
+  }
+  return total;
+}
+
+TEST(ChibaTest, CrowdedGridWithAreasGivesTheSameAnswerAsTestingEveryPair) {
+  std::vector<env::Query> q = crowded_crowns(3000);
+  auto field = chiba("chiba-crowded-area",
+                     "grid size: 8 8 8\ntransmittance: 0.7\nestimate intersection area: on\n" + kFiveSources);
+  auto a = answer_all(*field, q);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    EXPECT_NEAR(a[i].value[0], area_light_by_every_pair(q, i, 0.7, kFiveSourceList), 2e-5) << i;
+}
+
 TEST(ChibaTest, QueryErrors) {
   auto field = chiba("chiba-query-errors", kFromAbove);
   std::vector<env::Query> q{query_at(0, 0, 0, {-1})};

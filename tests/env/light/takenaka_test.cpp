@@ -3,8 +3,10 @@
 // values are worked out by hand in the comments.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "env/light/light_test_support.h"
 #include "env/programs/programs.h"
@@ -65,6 +67,58 @@ TEST(TakenakaTest, ShadingClustersMultiplyAndSourcesAdd) {
   // From above: B and C in the way, 0.1 * 0.1 of 0.5; from +x: open, 0.5.
   std::vector<env::Query> q{query_at(0, 0, 0, {4, 1}), query_at(0, 5, 0, {kPi, 0}), query_at(0, 9, 0, {kPi, 0})};
   EXPECT_NEAR(answer_all(*field, q)[0].value[1], 4 * (0.5 * 0.01 + 0.5) - 1, 1e-6);
+}
+
+// Every pair of clusters tested directly, by the formula of the manual:
+// sparsity 1.5, beam radius b, efficiency 1, no cost, so the answer is A Phi.
+double flux_by_every_pair(const std::vector<env::Query>& q, std::size_t i, double t, double b,
+                          const std::vector<std::array<double, 4>>& sources) {
+  auto radius = [&](std::size_t k) { return 1.5 * std::sqrt(double(q[k].module.parameters[0]) / std::numbers::pi); };
+  auto lens = [](double r1, double r2, double d) {
+    if (d >= r1 + r2) return 0.0;
+    if (d <= std::abs(r1 - r2)) return std::numbers::pi * std::min(r1, r2) * std::min(r1, r2);
+    double alpha = std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1));
+    double beta = std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2));
+    return r1 * r1 * (alpha - std::sin(2 * alpha) / 2) + r2 * r2 * (beta - std::sin(2 * beta) / 2);
+  };
+  double flux = 0;
+  for (const auto& s : sources) {
+    double n = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    double intensity = s[3];
+    double beam = b * radius(i);
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      if (j == i) continue;
+      double w[3];
+      for (int k = 0; k < 3; ++k) w[k] = double(q[j].turtle.position[k]) - double(q[i].turtle.position[k]);
+      double along = (w[0] * s[0] + w[1] * s[1] + w[2] * s[2]) / n;
+      if (along <= 0) continue;
+      double d = std::sqrt(std::max(0.0, w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along));
+      double covered = lens(beam, radius(j), d) / (std::numbers::pi * beam * beam);
+      intensity *= 1 - covered * (1 - t);
+    }
+    flux += intensity;
+  }
+  return double(q[i].module.parameters[0]) * flux;
+}
+
+TEST(TakenakaTest, GridGivesTheSameAnswerAsTestingEveryPair) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> unit(-1, 1), area(0.5f, 6);
+  std::vector<env::Query> q;
+  for (int i = 0; i < 2500; ++i) {
+    float x, y, z;
+    do {
+      x = unit(random), y = unit(random), z = unit(random);
+    } while (x * x + y * y + z * z > 1);
+    float crown = static_cast<float>(i % 2);
+    q.push_back(query_at(12 * crown + 9 * x, 9 * y, 9 * z + crown, {area(random), 0}));
+  }
+  std::vector<std::array<double, 4>> sources{{0, 1, 0, 0.4}, {0.5, 1, 0.2, 0.3}, {-1, 0.3, -0.6, 0.3}};
+  auto field = takenaka("takenaka-pairs", "grid size: 4 4 4\nbeam radius: 0.7\ntransmittance: 0.3\nefficiency: 1\n"
+                                          "source: 0 1 0 0.4\nsource: 0.5 1 0.2 0.3\nsource: -1 0.3 -0.6 0.3\n");
+  auto a = answer_all(*field, q);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    EXPECT_NEAR(a[i].value[1], flux_by_every_pair(q, i, 0.3, 0.7, sources), 2e-5 * q[i].module.parameters[0]) << i;
 }
 
 TEST(TakenakaTest, ModulesNeedAreaAndCost) {

@@ -5,7 +5,10 @@
 // asks the engine (through the body's RuleCall) whether F G follow in the
 // left context and, if they do, copies their parameters into the variables
 // x and y. Those are the model's own variables, declared beforehand with the
-// module's parameter types: a variable of another type does not bind.
+// module's parameter types. A variable of another type (even a convertible
+// one, an int for a float parameter) is a compile error: the reference
+// in_context_parameter takes cannot bind to it, and g++ reports "cannot bind
+// non-const lvalue reference" at the line of the .l file with the test.
 #pragma once
 
 #include <sylva/abi.h>

@@ -11,6 +11,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 #include <type_traits>
 
 namespace sylva::rt {
@@ -84,6 +87,9 @@ inline bool parse_sequence(S* xs, std::size_t n, char open, char close, abi::Tex
   return parse_char(in, close, close == ')' ? "')'" : "']'");
 }
 
+template <class T>
+bool parse_struct(T& v, abi::TextSource* in);
+
 inline int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -124,7 +130,7 @@ bool parse_value(T& v, abi::TextSource* in) {
     return parse_sequence(v, std::extent_v<T>, '[', ']', in, "'[' to begin an array");
   } else if constexpr (requires { sylva_parse_value(v, in); }) {
     // Structs of the model: the translator writes these overloads.
-    return sylva_parse_value(v, in);
+    return parse_struct(v, in);
   } else {
     // The bytes format_value writes for a type it cannot print otherwise.
     if (!parse_char(in, '#', "'#' and the bytes of the value")) return false;
@@ -150,12 +156,108 @@ inline bool parse_field_name(abi::TextSource* in, const char*& name, std::size_t
   if (length == 0) return parse_fail(in, "a field name");
   return parse_char(in, '=', "'=' after the field name");
 }
+// Every field of a saved struct must be given, once: a field left out
+// would otherwise read as 0 without a word. The struct readers (the
+// translator's sylva_parse_value, MouseStatus's below) hold no list of their
+// fields, but they offer each name they read to same_name with every field in
+// declaration order until one matches; a FieldCheck in force while one of
+// them runs sees those offers. Structs nest, so checks stack, per thread.
+class FieldCheck {
+ public:
+  enum Mode { kListing, kReading };
+  explicit FieldCheck(Mode mode, std::vector<const char*> fields = {})
+      : mode_(mode), fields_(std::move(fields)), given_(fields_.size(), false), outer_(current()) {
+    current() = this;
+  }
+  ~FieldCheck() { current() = outer_; }
+  FieldCheck(const FieldCheck&) = delete;
+  FieldCheck& operator=(const FieldCheck&) = delete;
+
+  static FieldCheck*& current() {
+    thread_local FieldCheck* check = nullptr;
+    return check;
+  }
+
+  // same_name compared a name read with `field`; false turns a match into
+  // a mismatch (a field given twice).
+  bool offered(const char* field, bool same) {
+    if (mode_ == kListing) {
+      fields_.push_back(field);
+      return same;
+    }
+    if (!same) return false;
+    for (std::size_t k = 0; k < fields_.size(); ++k) {
+      if (std::strcmp(fields_[k], field) != 0) continue;
+      if (given_[k]) {
+        twice_ = field;
+        return false;
+      }
+      given_[k] = true;
+    }
+    return true;
+  }
+
+  const std::vector<const char*>& fields() const { return fields_; }
+  const char* given_twice() const { return twice_; }
+  const char* first_missing() const {
+    for (std::size_t k = 0; k < fields_.size(); ++k)
+      if (!given_[k]) return fields_[k];
+    return nullptr;
+  }
+
+ private:
+  Mode mode_;
+  std::vector<const char*> fields_;
+  std::vector<bool> given_;
+  const char* twice_ = nullptr;
+  FieldCheck* outer_;
+};
+
+// TextSource::expected outlives the check that words it: the reader reports
+// it after the whole module has been read.
+inline const char* field_message(const std::string& text) {
+  thread_local std::string message;
+  message = text;
+  return message.c_str();
+}
+
 inline bool same_name(const char* name, std::size_t length, const char* field) {
-  return std::strlen(field) == length && std::memcmp(name, field, length) == 0;
+  const bool same = std::strlen(field) == length && std::memcmp(name, field, length) == 0;
+  FieldCheck* check = FieldCheck::current();
+  return check ? check->offered(field, same) : same;
 }
 inline bool unknown_field(abi::TextSource* in, const char* name, const char* expected) {
   in->at = name;
+  const FieldCheck* check = FieldCheck::current();
+  if (check && check->given_twice())
+    return parse_fail(in, field_message("field '" + std::string(check->given_twice()) + "' only once"));
   return parse_fail(in, expected);
+}
+
+// The fields of struct T, in declaration order, from its reader: "0" is no
+// field's name (names do not begin with a digit), so the reader offers it to
+// every field and fails without setting any. Empty for a value read
+// otherwise than by field names (EA20Array, SurfaceObj).
+template <class T>
+std::vector<const char*> struct_fields(T& v) {
+  static constexpr char kNoField[] = "{0=";
+  abi::TextSource probe{kNoField, kNoField + 3};
+  FieldCheck listing(FieldCheck::kListing);
+  sylva_parse_value(v, &probe);
+  return listing.fields();
+}
+
+// A struct read by its own reader, then checked for fields it left out, which
+// are reported at its closing '}'.
+template <class T>
+bool parse_struct(T& v, abi::TextSource* in) {
+  FieldCheck check(FieldCheck::kReading, struct_fields(v));
+  if (!sylva_parse_value(v, in)) return false;
+  if (const char* missing = check.first_missing()) {
+    --in->at;  // back to the '}'
+    return parse_fail(in, field_message("field '" + std::string(missing) + "' (a saved struct gives all its fields)"));
+  }
+  return true;
 }
 
 template <class... T>
