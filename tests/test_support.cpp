@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 #include "api/simulation.h"
 #include "io/string_text.h"
@@ -50,10 +52,30 @@ std::vector<fs::path> model_folders(const std::string& dir) {
   return folders;
 }
 
+namespace {
+
+// The folders made for this test program, removed when it exits so that runs
+// leave nothing behind in the temporary directory.
+struct TempDirs {
+  std::vector<fs::path> made;
+  ~TempDirs() {
+    std::error_code ignored;
+    for (const fs::path& dir : made) fs::remove_all(dir, ignored);
+  }
+};
+
+TempDirs& temp_dirs() {
+  static TempDirs dirs;
+  return dirs;
+}
+
+}  // namespace
+
 std::string make_temp_dir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("sylva-test-" + name + "-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  temp_dirs().made.push_back(dir);
   return dir.string();
 }
 
