@@ -1,0 +1,3 @@
+executable: chiba chiba.par
+communication type: pipes
+turtle position: %g %g %g

@@ -1,0 +1,3 @@
+executable: honda81 honda.par
+communication type: pipes
+turtle position: %g %g %g
