@@ -79,4 +79,10 @@ std::string make_temp_dir(const std::string& name) {
   return dir.string();
 }
 
+std::string write_temp_file(const std::string& folder, const std::string& file_name, const std::string& text) {
+  const std::string path = make_temp_dir(folder) + "/" + file_name;
+  std::ofstream(path) << text;
+  return path;
+}
+
 }  // namespace sylva::test

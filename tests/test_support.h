@@ -30,4 +30,8 @@ std::vector<std::filesystem::path> model_folders(const std::string& dir);
 // A fresh empty directory under the system's temporary directory.
 std::string make_temp_dir(const std::string& name);
 
+// Writes `text` as `file_name` in a fresh temporary directory named after
+// `folder`; returns the file's path.
+std::string write_temp_file(const std::string& folder, const std::string& file_name, const std::string& text);
+
 }  // namespace sylva::test

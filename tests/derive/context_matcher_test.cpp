@@ -311,11 +311,10 @@ TEST_F(ContextMatcherTest, BracketsCountEvenWhenFiltered) {
 // ---- end-to-end tests through the engine -------------------------------------
 
 std::string write_model(const std::string& test, const std::string& body) {
-  const std::string path = make_temp_dir("matching-" + test) + "/model.l";
-  std::ofstream(path) << "#include <lpfgall.h>\n"
-                         "module A(int); module B(int); module C(int); module D(int); module E(int);\n"
-                      << body;
-  return path;
+  return write_temp_file("matching-" + test, "model.l",
+                         "#include <lpfgall.h>\n"
+                         "module A(int); module B(int); module C(int); module D(int); module E(int);\n" +
+                             body);
 }
 
 // 3.1.3: << reads the new string, so one forward step propagates along it.

@@ -15,11 +15,8 @@ namespace sylva::test {
 namespace {
 
 std::string write_model(const std::string& test, const std::string& body) {
-  const std::string path = make_temp_dir("groups-" + test) + "/model.l";
-  std::ofstream(path) << "#include <lpfgall.h>\n"
-                         "module A(int); module B(int); module C(int);\n"
-                      << body;
-  return path;
+  return write_temp_file("groups-" + test, "model.l",
+                         "#include <lpfgall.h>\nmodule A(int); module B(int); module C(int);\n" + body);
 }
 
 TEST(Groups, CurrentGroupFirstThenGroupZero) {

@@ -17,13 +17,12 @@ namespace {
 // A model file with modules A..E (one int each), K, M, H, R, U (one int each)
 // and I (none) declared, then `body`.
 std::string write_model(const std::string& test, const std::string& body) {
-  const std::string path = make_temp_dir("in-body-" + test) + "/model.l";
-  std::ofstream(path) << "#include <lpfgall.h>\n"
+  return write_temp_file("in-body-" + test, "model.l",
+                         "#include <lpfgall.h>\n"
                          "module A(int); module B(int); module C(int); module D(int); module E(int);\n"
                          "module K(int); module M(int); module H(int); module R(int); module U(int);\n"
-                         "module I();\n"
-                      << body;
-  return path;
+                         "module I();\n" +
+                             body);
 }
 
 // The manual's first example (F, G renamed K, M: F and G are predefined): the body's tests do what `K(x) < M(l) > H(y)` does.

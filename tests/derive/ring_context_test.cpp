@@ -13,11 +13,8 @@ namespace sylva::test {
 namespace {
 
 std::string write_model(const std::string& test, const std::string& body) {
-  const std::string path = make_temp_dir("ring-" + test) + "/model.l";
-  std::ofstream(path) << "#include <lpfgall.h>\n"
-                         "module C(int); module D(int); module H();\n"
-                      << body;
-  return path;
+  return write_temp_file("ring-" + test, "model.l",
+                         "#include <lpfgall.h>\nmodule C(int); module D(int); module H();\n" + body);
 }
 
 // The string  ] C(1) [ H D(5) ] C(2) [ H D(6)  read round the ring is

@@ -60,9 +60,7 @@ class StepField : public env::Field {
 };
 
 std::string write_model(const std::string& name, const std::string& text) {
-  const std::string path = make_temp_dir("env-pass-" + name) + "/" + name + ".l";
-  std::ofstream(path) << text;
-  return path;
+  return write_temp_file("env-pass-" + name, name + ".l", text);
 }
 
 SimulationOptions options_with(std::shared_ptr<env::Field> field) {

@@ -68,9 +68,7 @@ class Runs {
 };
 
 std::string write_model(const std::string& name, const std::string& text) {
-  std::string path = make_temp_dir("gillespie-" + name) + "/" + name + ".l";
-  std::ofstream(path) << text;
-  return path;
+  return write_temp_file("gillespie-" + name, name + ".l", text);
 }
 
 // ---------------------------------------------------------------------------
