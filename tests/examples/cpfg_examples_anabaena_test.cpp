@@ -128,7 +128,9 @@ void expect_closed_form_counts(Stepper& run, int dt_tenths, int steps, const std
     const long low = cells_at(0, T, false), high = cells_at(0, T, true);
     EXPECT_GE(cells, low) << what << " after step " << k;
     EXPECT_LE(cells, high) << what << " after step " << k;
-    if (!division_exactly_at(0, T)) EXPECT_EQ(cells, high) << what << " after step " << k;
+    if (!division_exactly_at(0, T)) {
+      EXPECT_EQ(cells, high) << what << " after step " << k;
+    }
   }
 }
 

@@ -92,7 +92,9 @@ TEST(CpfgExampleMesotonic, SignalStopsLowerBranchesFirst) {
       previous = count(b, 'F');
       ++finished;
     }
-    if (n >= 36) EXPECT_GT(finished, 0);
+    if (n >= 36) {
+      EXPECT_GT(finished, 0);
+    }
   }
 }
 
@@ -205,7 +207,9 @@ TEST(CpfgExampleShedding, CrownOfConstantSizeMovesUp) {
   for (int n = 0; n <= 9; ++n) {
     EXPECT_EQ(run.text(), shedding_by_hand(n)) << "after step " << n;
     // dynamic equilibrium: from step 5 on, 5 pairs of living branches
-    if (n >= 5) EXPECT_EQ(count(parse_cpfg(run.text()), 'B'), 10);
+    if (n >= 5) {
+      EXPECT_EQ(count(parse_cpfg(run.text()), 'B'), 10);
+    }
     run.step();
   }
 }
@@ -256,7 +260,9 @@ TEST(CpfgExampleCompoundLeaf, ApicesTripleAndInternodesDouble) {
       EXPECT_EQ(with_length, 2 * static_cast<int>(std::pow(3, j - 1))) << "n " << n << " j " << j;
     }
     for (const CpfgModule& m : s)
-      if (m.name == 'F') EXPECT_EQ(m.params.at(0), 1);
+      if (m.name == 'F') {
+        EXPECT_EQ(m.params.at(0), 1);
+      }
   }
 }
 

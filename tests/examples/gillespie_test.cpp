@@ -181,7 +181,9 @@ TEST(Gillespie, ReactionsAreChosenByPropensityAndTimesAreExponential) {
     for (std::size_t k = 0; k < clock.taus.size(); ++k) {
       ASSERT_GT(clock.taus[k], 0) << "step " << k + 1;
       ASSERT_TRUE(std::isfinite(clock.taus[k]));
-      if (k > 0) ASSERT_GT(clock.times[k], clock.times[k - 1]);
+      if (k > 0) {
+        ASSERT_GT(clock.times[k], clock.times[k - 1]);
+      }
     }
     end_times.push_back(clock.times.back());
   }
