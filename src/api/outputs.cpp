@@ -1,13 +1,13 @@
 #include "api/outputs.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <set>
 
 #include "geometry/back_sides.h"
 #include "geometry/tessellation.h"
+#include "io/input_text.h"
 #include "io/mesh_writers.h"
 #include "io/png_renderer.h"
 #include "io/vector_writer.h"
@@ -19,13 +19,12 @@ namespace {
 enum class Format { Obj, Ply, Glb, Vector, Png, Unknown };
 
 Format format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".obj") return Format::Obj;
-  if (ext == ".ply") return Format::Ply;
-  if (ext == ".glb") return Format::Glb;
-  if (ext == ".svg" || ext == ".pdf" || ext == ".ps" || ext == ".eps") return Format::Vector;
-  if (ext == ".png") return Format::Png;
+  const std::string ext = io::extension_of(path);
+  if (ext == "obj") return Format::Obj;
+  if (ext == "ply") return Format::Ply;
+  if (ext == "glb") return Format::Glb;
+  if (ext == "svg" || ext == "pdf" || ext == "ps" || ext == "eps") return Format::Vector;
+  if (ext == "png") return Format::Png;
   return Format::Unknown;
 }
 
@@ -62,13 +61,13 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
   check_output_path(path);
   const io::ViewFile& view = view_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
-  switch (format_of(path)) {
+  const Format f = format_of(path);
+  switch (f) {
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
       geometry::TriangleMesh mesh = geometry::tessellate(scene, view.tessellation_options());
       geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
-      const Format f = format_of(path);
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
       else io::write_glb(path, mesh, palette, simulation.types());

@@ -9,14 +9,13 @@
 #include "turtle/cpfg_symbols.h"
 #include "turtle/interpreter.h"
 #include "env/environment.h"
+#include "io/input_text.h"
 #include "support/diagnostic.h"
 
 namespace sylva {
 namespace {
 
-bool is_comm_file(const std::string& path) {
-  return path.size() > 2 && (path.compare(path.size() - 2, 2, ".e") == 0 || path.compare(path.size() - 2, 2, ".E") == 0);
-}
+bool is_comm_file(const std::string& path) { return io::extension_of(path) == "e"; }
 
 // The input files without the environment's .e file, which the engine reads
 // itself (lpfg recognises it by its extension).
@@ -25,6 +24,12 @@ std::vector<std::string> without_comm_files(const std::vector<std::string>& path
   for (const std::string& path : paths)
     if (!is_comm_file(path)) out.push_back(path);
   return out;
+}
+
+// A message for the user: to the sink, or to standard error without one.
+void tell(const derive::Derivation::MessageSink& messages, const std::string& text) {
+  if (messages) messages(text);
+  else std::fputs(text.c_str(), stderr);
 }
 
 }  // namespace
@@ -41,10 +46,7 @@ void Simulation::start_environment(const EnvironmentOptions& options, const std:
   }
   if (comm_file.empty() && !options.field) return;
   env::CommSpec spec = comm_file.empty() ? env::CommSpec::everything() : env::read_comm_spec(comm_file);
-  auto verbose = [messages](const std::string& text) {
-    if (messages) messages(text);
-    else std::fputs(text.c_str(), stderr);
-  };
+  auto verbose = [messages](const std::string& text) { tell(messages, text); };
   // Made first: a model the environment cannot serve fails before a program is started.
   environment_pass_ = std::make_unique<EnvironmentPass>(spec, derivation_->types(), options.clean_ea20, model_path_,
                                                         std::move(verbose));
@@ -58,10 +60,7 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
                        derive::Derivation::MessageSink messages)
     : model_path_(model_path) {
   inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(without_comm_files(options.input_files), options.build.compiler));
-  for (const std::string& warning : inputs_->warnings) {
-    if (messages) messages(warning + "\n");
-    else std::fprintf(stderr, "%s\n", warning.c_str());
-  }
+  for (const std::string& warning : inputs_->warnings) tell(messages, warning + "\n");
   turtle_settings_ = inputs_->turtle_settings();
 
   build::BuildOptions build = options.build;

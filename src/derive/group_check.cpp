@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "derive/gillespie.h"
 #include "support/diagnostic.h"
 
 namespace sylva::derive {
@@ -10,10 +11,9 @@ namespace {
 
 bool defines_group(const abi::ModelDescriptor& model, int group) {
   if (group == 0) return true;
-  auto in = [group](const int* list, std::uint32_t count) {
-    return list && std::find(list, list + count, group) != list + count;
-  };
-  if (in(model.groups, model.group_count) || in(model.gillespie_groups, model.gillespie_group_count)) return true;
+  const int* groups = model.groups;
+  if (groups && std::find(groups, groups + model.group_count, group) != groups + model.group_count) return true;
+  if (is_gillespie_group(model, group)) return true;
   // A rule in the group defines it too (models whose groups come from elsewhere).
   for (std::uint32_t r = 0; r < model.rule_count; ++r)
     if (model.rules[r].group == group) return true;

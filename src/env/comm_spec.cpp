@@ -1,8 +1,8 @@
 #include "env/comm_spec.h"
 
 #include <algorithm>
-#include <cctype>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "env/keyword.h"
@@ -10,14 +10,6 @@
 
 namespace sylva::env {
 namespace {
-
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-
 
 class SpecParser {
  public:
@@ -28,11 +20,11 @@ class SpecParser {
     std::string line;
     int number = 0;
     while (std::getline(lines, line)) parse_line(line, ++number);
-    last_line_ = std::max(number, 1);
+    const int last_line = std::max(number, 1);
     if (spec_.executable.empty())
-      fail(last_line_, std::string::npos, "missing 'executable:' (the environmental program to run)");
+      fail(last_line, std::string::npos, "missing 'executable:' (the environmental program to run)");
     if (spec_.communication_type.empty())
-      fail(last_line_, std::string::npos, "missing 'communication type:' (pipes, files or memory)");
+      fail(last_line, std::string::npos, "missing 'communication type:' (pipes, files or memory)");
     return std::move(spec_);
   }
 
@@ -65,7 +57,7 @@ class SpecParser {
       spec_.executable_column = static_cast<int>(value_start) + 1;
     } else if (command == "communication type") {
       once(at, command);
-      const std::string type = lower(value);
+      const std::string type = lowercase(value);
       if (type != "pipes" && type != "files" && type != "memory" && type != "sockets")
         fail(number, value_start, "expected 'pipes', 'files' or 'memory' as the communication type, not '" + value + "'");
       spec_.communication_type = type;
@@ -128,16 +120,13 @@ class SpecParser {
   }
 
   bool flag(const Place& at, const std::string& value) const {
-    const std::string v = lower(value);
-    if (v == "yes" || v == "on" || v == "true" || v == "1") return true;
-    if (v == "no" || v == "off" || v == "false" || v == "0") return false;
+    if (const std::optional<bool> on = parse_switch(value)) return *on;
     fail(at.line, at.value, "expected yes or no, not '" + value + "'");
   }
 
   const std::string& text_;
   CommSpec spec_;
   std::vector<std::string> seen_;
-  int last_line_ = 1;
 };
 
 }  // namespace

@@ -163,15 +163,6 @@ ProgramInvocation invocation_of(const CommSpec& spec) {
   return invocation;
 }
 
-const std::vector<std::string>& builtin_program_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> out;
-    for (const Builtin& b : kBuiltins) out.emplace_back(b.name);
-    return out;
-  }();
-  return names;
-}
-
 std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options) {
   const SourceLocation where{spec.path, spec.executable_line, spec.executable_column};
   const ProgramInvocation invocation = invocation_of(spec);

@@ -43,9 +43,6 @@ struct FieldOptions {
 // The executable: line of `spec` split into words as a shell would.
 ProgramInvocation invocation_of(const CommSpec& spec);
 
-// The names of the built-in programs.
-const std::vector<std::string>& builtin_program_names();
-
 // The Field for `spec`; a ModelError at the executable: line when the program
 // cannot be found, loaded or started.
 std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options = {});

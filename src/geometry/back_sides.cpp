@@ -1,18 +1,23 @@
 #include "geometry/back_sides.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace sylva::geometry {
+namespace {
+
+// Whether a part's back has a colour of its own (a colour index other than its front's).
+bool has_own_back(const MeshPart& p) { return p.back_color >= 0 && (p.back_color & 255) != (p.color & 255); }
+
+}  // namespace
 
 void split_back_sides(TriangleMesh& mesh) {
-  bool any = false;
-  for (const MeshPart& p : mesh.parts) any = any || (p.back_color >= 0 && (p.back_color & 255) != (p.color & 255));
-  if (!any) return;
+  if (std::none_of(mesh.parts.begin(), mesh.parts.end(), has_own_back)) return;
   std::vector<MeshPart> parts;
   parts.reserve(mesh.parts.size() * 2);
   std::unordered_map<std::uint32_t, std::uint32_t> copy_of;  // front vertex -> its reversed copy
   for (MeshPart front : mesh.parts) {
-    if (front.back_color < 0 || (front.back_color & 255) == (front.color & 255)) {
+    if (!has_own_back(front)) {
       parts.push_back(front);
       continue;
     }

@@ -288,20 +288,11 @@ std::string product(Cursor& c, Scope& scope) {
   }
 }
 
-std::string sum(Cursor& c, Scope& scope) {
-  std::string left = product(c, scope);
-  while (true) {
-    Tok t = peek_token(c);
-    if (t.kind != Tok::kOp || (t.text != "+" && t.text != "-")) return left;
-    next_token(c);
-    left = "(" + left + " " + t.text + " " + product(c, scope) + ")";
-  }
-}
-
 std::string binary_level(Cursor& c, Scope& scope, int level) {
-  // 0: ||, 1: &&, 2: == !=, 3: < <= > >=
-  static const std::vector<std::vector<std::string>> ops = {{"||"}, {"&&"}, {"==", "!="}, {"<", "<=", ">", ">="}};
-  auto next = [&]() { return level == 3 ? sum(c, scope) : binary_level(c, scope, level + 1); };
+  // 0: ||, 1: &&, 2: == !=, 3: < <= > >=, 4: + -
+  static const std::vector<std::vector<std::string>> ops = {
+      {"||"}, {"&&"}, {"==", "!="}, {"<", "<=", ">", ">="}, {"+", "-"}};
+  auto next = [&]() { return level == 4 ? product(c, scope) : binary_level(c, scope, level + 1); };
   std::string left = next();
   while (true) {
     Tok t = peek_token(c);

@@ -381,26 +381,20 @@ class CppGenerator {
            std::to_string(rule.at.line) + ", " + std::to_string(rule.view) + "},\n";
     }
     t += "  {}\n};\n";
-    if (!model_.lsystem_labels.empty()) {
-      t += "const int sylva_lsystem_labels[] = {";
-      for (int label : model_.lsystem_labels) t += std::to_string(label) + ",";
+    auto int_array = [&t](const char* name, const std::vector<int>& values) {
+      if (values.empty()) return;
+      t += std::string("const int ") + name + "[] = {";
+      for (int v : values) t += std::to_string(v) + ",";
       t += "};\n";
-    }
+    };
+    int_array("sylva_lsystem_labels", model_.lsystem_labels);
     if (!model_.verify_string.empty()) {
       t += "const ::sylva::abi::ModuleId sylva_verify_string[] = {";
       for (const std::string& name : model_.verify_string) t += std::to_string(module_id_.at(name)) + ",";
       t += "};\n";
     }
-    if (!model_.gillespie_groups.empty()) {
-      t += "const int sylva_gillespie_groups[] = {";
-      for (int group : model_.gillespie_groups) t += std::to_string(group) + ",";
-      t += "};\n";
-    }
-    if (!model_.groups.empty()) {
-      t += "const int sylva_groups[] = {";
-      for (int group : model_.groups) t += std::to_string(group) + ",";
-      t += "};\n";
-    }
+    int_array("sylva_gillespie_groups", model_.gillespie_groups);
+    int_array("sylva_groups", model_.groups);
     t += "}  // namespace\n\n";
     auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
     t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";

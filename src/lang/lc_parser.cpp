@@ -122,18 +122,19 @@ void LcParser::open_group(bool gillespie) {
   const int group = std::stoi(number.text, nullptr, 0);
   const std::string name = std::to_string(group);
   if (gillespie && group == 0) fail(number, "group 0 is the main group and cannot be a Gillespie group");
-  if (gillespie && regular_groups_.count(group))
+  auto holds = [group](const std::vector<int>& list) {
+    return std::find(list.begin(), list.end(), group) != list.end();
+  };
+  // model_.groups holds both kinds; a number is of one kind only.
+  const bool known = holds(model_.groups), known_gillespie = holds(model_.gillespie_groups);
+  if (gillespie && known && !known_gillespie)
     fail(number, "group " + name + " is already a regular group ('group " + name +
                      ":'); a Gillespie group needs a number of its own");
-  if (!gillespie && gillespie_groups_.count(group))
+  if (!gillespie && known_gillespie)
     fail(number, "group " + name + " is already a Gillespie group ('ggroup " + name +
                      ":'); a regular group needs a number of its own");
-  (gillespie ? gillespie_groups_ : regular_groups_).insert(group);
-  if (gillespie && std::find(model_.gillespie_groups.begin(), model_.gillespie_groups.end(), group) ==
-                       model_.gillespie_groups.end())
-    model_.gillespie_groups.push_back(group);
-  if (std::find(model_.groups.begin(), model_.groups.end(), group) == model_.groups.end())
-    model_.groups.push_back(group);
+  if (gillespie && !known_gillespie) model_.gillespie_groups.push_back(group);
+  if (!known) model_.groups.push_back(group);
   group_ = group;
   gillespie_ = gillespie;
   i_ += 3;

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "lang/model_ir.h"
@@ -106,6 +105,7 @@ class LcParser {
 
   // ---- module lists (axiom, produce) (lc_rule_parser.cpp) ----------------------
   std::vector<ModuleCall> parse_module_calls(const std::string& where);
+  ModuleCall parse_module_call(const std::string& expected, const char* arity_verb);
   static std::string arity_message(const ModuleDecl& decl, std::size_t given, const char* verb);
   std::vector<Code> parse_arguments();
 
@@ -128,7 +128,6 @@ class LcParser {
   RuleKind block_ = RuleKind::Production;
   int group_ = 0;
   bool gillespie_ = false;  // group_ is a Gillespie group
-  std::unordered_set<int> regular_groups_{0}, gillespie_groups_;
   int view_ = 0;
   int filter_ = -1;
   SourceLocation first_verify_string_;

@@ -114,27 +114,31 @@ std::vector<ModuleCall> LcParser::parse_module_calls(const std::string& where) {
     if (tok.is_punct(";") && !parenthesized) break;
     // lpfg accepts a produce statement that runs into the closing brace.
     if (tok.is_punct("}") && !parenthesized && !calls.empty()) return calls;
-    ModuleCall call;
-    call.at = tok;
-    if (tok.is_punct("[") || tok.is_punct("]")) {
-      call.name = tok.is_punct("[") ? "SB" : "EB";
-      next();
-      calls.push_back(std::move(call));
-      continue;
-    }
-    if (!tok.is_ident()) fail(tok, "expected a module in " + where + ", found " + describe(tok));
-    const ModuleDecl& decl = require_module(tok);
-    call.name = next().text;
-    if (peek().is_punct("(")) {
-      next();
-      call.args = parse_arguments();
-    }
-    if (call.args.size() != decl.param_types.size())
-      fail(call.at, arity_message(decl, call.args.size(), "is given"));
-    calls.push_back(std::move(call));
+    calls.push_back(parse_module_call("a module in " + where, "is given"));
   }
   next();  // ;
   return calls;
+}
+
+// One module of a list: `[`, `]`, or a declared module with its arguments.
+ModuleCall LcParser::parse_module_call(const std::string& expected, const char* arity_verb) {
+  const Token& tok = peek();
+  ModuleCall call;
+  call.at = tok;
+  if (tok.is_punct("[") || tok.is_punct("]")) {
+    call.name = tok.is_punct("[") ? "SB" : "EB";
+    next();
+    return call;
+  }
+  if (!tok.is_ident()) fail(tok, "expected " + expected + ", found " + describe(tok));
+  const ModuleDecl& decl = require_module(tok);
+  call.name = next().text;
+  if (peek().is_punct("(")) {
+    next();
+    call.args = parse_arguments();
+  }
+  if (call.args.size() != decl.param_types.size()) fail(call.at, arity_message(decl, call.args.size(), arity_verb));
+  return call;
 }
 
 std::string LcParser::arity_message(const ModuleDecl& decl, std::size_t given, const char* verb) {
@@ -277,27 +281,9 @@ BodyPart LcParser::parse_in_context() {
                  : w == "InNewLeftContext" ? abi::kNewLeft
                                            : abi::kNewRight;
   next();  // (
-  while (!peek().is_punct(")")) {
-    const Token& tok = peek();
-    ModuleCall m;
-    m.at = tok;
-    if (tok.is_punct("[") || tok.is_punct("]")) {
-      m.name = tok.is_punct("[") ? "SB" : "EB";
-      next();
-      test.modules.push_back(std::move(m));
-      continue;
-    }
-    if (!tok.is_ident()) fail(tok, "expected a module or ')' in " + w + "(...), found " + describe(tok));
-    const ModuleDecl& decl = require_module(tok);
-    m.name = next().text;
-    if (peek().is_punct("(")) {
-      next();
-      m.args = parse_arguments();
-    }
-    if (m.args.size() != decl.param_types.size())
-      fail(m.at, arity_message(decl, m.args.size(), std::string(w + " names").c_str()));
-    test.modules.push_back(std::move(m));
-  }
+  const std::string names = w + " names";
+  while (!peek().is_punct(")"))
+    test.modules.push_back(parse_module_call("a module or ')' in " + w + "(...)", names.c_str()));
   if (test.modules.empty()) fail(peek(), "expected the modules to look for in " + w + "(...)");
   next();  // )
   return test;

@@ -220,23 +220,24 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
   }
   Frame& frame = state_.frame;
   const bool corrected = settings_.corrected_rotation;
+  // Computed only by the symbols that use them (this runs for every module).
   // A rotation symbol's angle: its parameter, or the view file's increment.
-  const float angle = n > 0 ? param(p, 0) : settings_.angle_increment;
+  auto angle = [&] { return n > 0 ? param(p, 0) : settings_.angle_increment; };
   // A step: its parameter or 1, times the turtle scale.
-  const float step = (n > 0 ? param(p, 0) : 1.0f) * state_.scale;
+  auto step = [&] { return (n > 0 ? param(p, 0) : 1.0f) * state_.scale; };
   // A circle or sphere: the parameter is its diameter, the line width by default.
-  const float radius = (n > 0 ? param(p, 0) : state_.width) * state_.scale / 2;
+  auto radius = [&] { return (n > 0 ? param(p, 0) : state_.width) * state_.scale / 2; };
   // A generalized cylinder's strips (@Gc, .(strips), @Ge): its parameter or 1.
-  const int strips = n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1;
+  auto strips = [&] { return n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1; };
   switch (op) {
     case O::None: break;
     case O::Push: push(); break;
     case O::Pop: pop(); break;
 
-    case O::Forward: forward(step, true, true); break;
-    case O::Move: forward(step, false, true); break;
-    case O::ForwardNoVertex: forward(step, true, false); break;
-    case O::MoveNoVertex: forward(step, false, false); break;
+    case O::Forward: forward(step(), true, true); break;
+    case O::Move: forward(step(), false, true); break;
+    case O::ForwardNoVertex: forward(step(), true, false); break;
+    case O::MoveNoVertex: forward(step(), false, false); break;
     case O::MoveTo: {
       // Coordinates left out keep their value.
       Vec3 to = state_.position;
@@ -249,12 +250,12 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
 
     // The lpfg modules these are the cpfg equivalents of (LPFG manual 5.2):
     // + Left, - Right, & Down, ^ Up, \ RollL, / RollR.
-    case O::Left: turn(angle, 0); break;
-    case O::Right: turn(-angle, 0); break;
-    case O::Down: turn(corrected ? angle : -angle, 1); break;
-    case O::Up: turn(corrected ? -angle : angle, 1); break;
-    case O::RollLeft: turn(corrected ? -angle : angle, 2); break;
-    case O::RollRight: turn(corrected ? angle : -angle, 2); break;
+    case O::Left: turn(angle(), 0); break;
+    case O::Right: turn(-angle(), 0); break;
+    case O::Down: turn(corrected ? angle() : -angle(), 1); break;
+    case O::Up: turn(corrected ? -angle() : angle(), 1); break;
+    case O::RollLeft: turn(corrected ? -angle() : angle(), 2); break;
+    case O::RollRight: turn(corrected ? angle() : -angle(), 2); break;
     case O::TurnAround: frame.rotate_up(-1, 0); break;
     case O::ReturnOrRollToVertical:
       if (n == 0 && !sub_lsystem_scales_.empty()) {
@@ -314,20 +315,20 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       else end_polygon();
       break;
     case O::VertexOrCylinderPoint:
-      if (n > 0) cylinder_dot(strips);
+      if (n > 0) cylinder_dot(strips());
       else polygon_vertex();
       break;
 
-    case O::CircleScreen: circle(radius, 0, true); break;
-    case O::CircleHL: circle(radius, 0, false); break;
-    case O::CircleScreenBoundary: circle(radius, state_.width, true); break;
-    case O::CircleHLBoundary: circle(radius, state_.width, false); break;
-    case O::Sphere: sphere(radius); break;
+    case O::CircleScreen: circle(radius(), 0, true); break;
+    case O::CircleHL: circle(radius(), 0, false); break;
+    case O::CircleScreenBoundary: circle(radius(), state_.width, true); break;
+    case O::CircleHLBoundary: circle(radius(), state_.width, false); break;
+    case O::Sphere: sphere(radius()); break;
 
     case O::CylinderStart: start_cylinder(); break;
     // @Gc(strips), @Ge(strips): the bands since the previous control point.
-    case O::CylinderPoint: cylinder_point(strips); break;
-    case O::CylinderEnd: end_cylinder(strips); break;
+    case O::CylinderPoint: cylinder_point(strips()); break;
+    case O::CylinderEnd: end_cylinder(strips()); break;
     case O::CylinderTangents:
       // @Gt(start,end): the Hermite tangent coefficients of the stretches
       // ended by the next control points; one parameter sets both.
@@ -445,14 +446,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       for (int k = 0; k < n; ++k) values[static_cast<std::size_t>(k)] = param(label_values, k);
       std::string text = format_cpfg_label(label_text(p), values.data(), n);
       if (trace_) *trace_ += " \"" + text + "\"";
-      note_position(" at ", state_.position);
-      if (!scene_) break;
-      geometry::Label l;
-      l.position = state_.position;
-      l.text = std::move(text);
-      l.color = state_.color;
-      l.from = from_;
-      scene_->labels.push_back(std::move(l));
+      add_label(std::move(text));
       break;
     }
 
@@ -464,7 +458,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       const Vec3 axis = cross(from, to);
       const float s = length(axis), c = dot(from, to);
       Vec3 up = state_.step_up;
-      if (s > 1e-6f) up = up * c + cross(axis / s, up) * s + (axis / s) * (dot(axis / s, up) * (1 - c));
+      if (s > 1e-6f) up = rotated(up, axis / s, c, s);
       else if (c < 0) note(" (heading reversed: the last step's up kept)");
       // Exactly across the heading (it may have drifted from it).
       up = up - to * dot(up, to);

@@ -290,7 +290,8 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
       ring_between_.resize(n_sides);
       // Parallel transport of the first frame along the curve, then the roll
       // left between it and the last frame, spread over the stretch.
-      std::vector<Frame> frames(static_cast<std::size_t>(strips) + 1);
+      std::vector<Frame>& frames = stretch_frames_;
+      frames.resize(static_cast<std::size_t>(strips) + 1);
       frames[0] = from.frame;
       for (int j = 1; j <= strips; ++j) {
         const float t = static_cast<float>(j) / static_cast<float>(strips);

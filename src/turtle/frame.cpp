@@ -33,11 +33,6 @@ void Frame::rotate_heading(float c, float s) {
   left = l;
 }
 
-namespace {
-// Rodrigues' rotation of v around the unit axis k.
-Vec3 rotated(Vec3 v, Vec3 k, float c, float s) { return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c)); }
-}  // namespace
-
 void Frame::rotate(Vec3 axis, float c, float s) {
   heading = rotated(heading, axis, c, s);
   left = rotated(left, axis, c, s);

@@ -19,6 +19,9 @@ class AngleCache {
   float degrees_ = 0, cos_ = 1, sin_ = 0;
 };
 
+// Rodrigues' rotation of v around the unit axis k by the angle of (c, s).
+inline Vec3 rotated(Vec3 v, Vec3 k, float c, float s) { return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c)); }
+
 struct Frame {
   Vec3 heading{0, 1, 0};
   Vec3 left{-1, 0, 0};

@@ -53,7 +53,7 @@ TurtleInterpreter::Impl::Impl(const TurtleSettings& settings, const ModuleTypes&
   }
   for (const Tropism& t : settings.tropisms) elasticity_.push_back(t.elasticity);
   elasticity_.push_back(settings.simple_tropism.elasticity);
-  for (float e : elasticity_) bending_ = bending_ || e != 0;
+  update_bending();
 }
 
 std::string TurtleInterpreter::Impl::where() const {
@@ -177,6 +177,10 @@ void TurtleInterpreter::Impl::apply_tropisms() {
   f.orthonormalize();
 }
 
+void TurtleInterpreter::Impl::update_bending() {
+  bending_ = std::any_of(elasticity_.begin(), elasticity_.end(), [](float e) { return e != 0; });
+}
+
 void TurtleInterpreter::Impl::change_elasticity(int id, float value, bool relative) {
   const std::size_t n = settings_.tropisms.size();
   if (id < 1 || static_cast<std::size_t>(id) > n) {
@@ -185,8 +189,7 @@ void TurtleInterpreter::Impl::change_elasticity(int id, float value, bool relati
   }
   float& e = elasticity_[static_cast<std::size_t>(id) - 1];
   e = relative ? e + value : value;
-  bending_ = false;
-  for (float x : elasticity_) bending_ = bending_ || x != 0;
+  update_bending();
   if (trace_) {
     *trace_ += " elasticity ";
     append_number(*trace_, e);
@@ -216,8 +219,7 @@ void TurtleInterpreter::Impl::pop() {
   const std::size_t n = elasticity_.size();
   std::copy(saved_elasticity_.end() - static_cast<std::ptrdiff_t>(n), saved_elasticity_.end(), elasticity_.begin());
   saved_elasticity_.resize(saved_elasticity_.size() - n);
-  bending_ = false;
-  for (float x : elasticity_) bending_ = bending_ || x != 0;
+  update_bending();
   if (trace_) {
     *trace_ += " depth " + std::to_string(stack_.size());
     note_position(" at ", state_.position);
@@ -225,14 +227,7 @@ void TurtleInterpreter::Impl::pop() {
 }
 
 void TurtleInterpreter::Impl::query(unsigned char* params, Vec3 value, bool in_string) {
-  if (in_string) {
-    const float xyz[3] = {value.x, value.y, value.z};
-    std::memcpy(params, xyz, sizeof xyz);
-  }
-  if (trace_) {
-    *trace_ += in_string ? " = " : " not in the string: ";
-    append_vector(*trace_, value);
-  }
+  query_cpfg(params, 3, value, in_string);
 }
 
 // ---- dispatch ----------------------------------------------------------------------
@@ -423,8 +418,7 @@ void TurtleInterpreter::Impl::visit(ModuleId id, unsigned char* p, std::uint32_t
     }
     case m::Elasticity:
       elasticity_.back() = f32(p);
-      bending_ = false;
-      for (float x : elasticity_) bending_ = bending_ || x != 0;
+      update_bending();
       break;
 
     case m::GetPos: query(p, state_.position, in_string); break;

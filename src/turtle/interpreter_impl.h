@@ -51,6 +51,7 @@ struct TurtleInterpreter::Impl {
   void pop();
   void apply_tropisms();
   void change_elasticity(int id, float value, bool relative);
+  void update_bending();  // bending_ from elasticity_
   void query(unsigned char* params, Vec3 value, bool in_string);
   void note(const char* text);
   // " (module N of the string)", for errors.
@@ -74,6 +75,8 @@ struct TurtleInterpreter::Impl {
   void surface_point(int row, int column);
   void draw_lsystem_surface();
   void label(const unsigned char* params);
+  // A label with the turtle's position and colour.
+  void add_label(std::string text);
   geometry::Placement placement(Vec3 local_heading, Vec3 local_up, Vec3 contact, Vec3 scale) const;
   void begin_group();
   void end_group(geometry::TriangleGroup::Kind kind);
@@ -168,6 +171,7 @@ struct TurtleInterpreter::Impl {
   std::deque<ResampledContour> resampled_;  // references stay valid as it grows
   std::vector<Vec3> blended_;
   std::vector<Vec3> ring_from_, ring_to_, ring_between_;  // contours of a stretch's inner rings
+  std::vector<Frame> stretch_frames_;  // a stretch's frames, carried along its curve
 
   // The L-system-defined surface (InitSurface, SurfacePoint, DrawSurface).
   geometry::BezierPatch lsystem_surface_;

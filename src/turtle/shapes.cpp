@@ -265,11 +265,15 @@ void TurtleInterpreter::Impl::draw_lsystem_surface() {
 void TurtleInterpreter::Impl::label(const unsigned char* params) {
   const char* text = nullptr;
   std::memcpy(&text, params, sizeof text);
+  add_label(text ? text : "");
+}
+
+void TurtleInterpreter::Impl::add_label(std::string text) {
   note_position(" at ", state_.position);
   if (!scene_) return;
   geometry::Label l;
   l.position = state_.position;
-  l.text = text ? text : "";
+  l.text = std::move(text);
   l.color = state_.color;
   l.from = from_;
   scene_->labels.push_back(std::move(l));

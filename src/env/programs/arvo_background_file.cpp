@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "env/keyword.h"
 #include "env/programs/parameter_file.h"
 #include "support/diagnostic.h"
 
@@ -153,8 +154,7 @@ class BackgroundReader {
 
   void command() {
     const Token& at = tokens_[next_++];
-    std::string name = at.text;
-    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string name = lowercase(at.text);
     if (name == "polygon") {
       polygon(vertices(at, name, 3, 3));
     } else if (name == "polygonuv") {

@@ -62,7 +62,6 @@ class ObstacleScene {
   };
   Box bounds_of(const Obstacle& obstacle) const;
   void build_grid() const;
-  std::array<int, 3> cell_range_lo(const Vec3& p) const;
   int cell_of(int axis, double coordinate) const;
 
   Domain domain_;

@@ -25,8 +25,6 @@ class LeafGrid {
 
   void remove_all_leaves();
 
-  std::size_t leaves_over(int i, int j) const { return leaves_[index(i, j)]; }
-
  private:
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * size_[0] + i; }
 

@@ -36,12 +36,6 @@ struct RayOffset {
   double distance_squared = 0;
 };
 
-inline RayOffset offset_from_ray(Vec3 origin, Vec3 direction, Vec3 point) {
-  Vec3 to_point = point - origin;
-  double along = dot(to_point, direction);
-  return {along, std::max(0.0, dot(to_point, to_point) - along * along)};
-}
-
 // Length of the part of the ray (from the origin on) inside a sphere of
 // `radius` at the point described by `offset`; 0 when the ray misses it.
 inline double chord_ahead(RayOffset offset, double radius) {

@@ -4,18 +4,12 @@
 #include <optional>
 #include <sstream>
 
+#include "env/keyword.h"
 #include "env/programs/parameter_file.h"
 
 namespace sylva::env {
 namespace {
 
-std::string lower(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
-bool is_on(const std::string& word) { return word == "on" || word == "yes" || word == "true" || word == "1"; }
-bool is_off(const std::string& word) { return word == "off" || word == "no" || word == "false" || word == "0"; }
 
 std::optional<float> to_float(std::string_view text) { return parse_number<float>(text); }
 
@@ -58,9 +52,7 @@ int ParameterCommand::integer() const {
 
 bool ParameterCommand::flag() const {
   expect_count(1, "on or off");
-  std::string word = lower(values_[0].text);
-  if (is_on(word)) return true;
-  if (is_off(word)) return false;
+  if (const std::optional<bool> on = parse_switch(values_[0].text)) return *on;
   fail(values_[0], "expected on or off, found " + quoted(values_[0]));
 }
 
@@ -178,9 +170,7 @@ std::vector<int> ParameterCommand::read_positive_integers(std::size_t count, con
 
 bool ParameterCommand::read_flag() const {
   if (values_.size() == 1) {
-    std::string word = lower(values_[0].text);
-    if (is_on(word)) return true;
-    if (is_off(word)) return false;
+    if (const std::optional<bool> on = parse_switch(values_[0].text)) return *on;
   }
   fail(values_.empty() ? values_end_column_ : values_[0].column,
        "expected yes or no (also on/off) after '" + name_ + ":'");
