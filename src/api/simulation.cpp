@@ -15,17 +15,6 @@
 namespace sylva {
 namespace {
 
-bool is_comm_file(const std::string& path) { return io::extension_of(path) == "e"; }
-
-// The input files without the environment's .e file, which the engine reads
-// itself (lpfg recognises it by its extension).
-std::vector<std::string> without_comm_files(const std::vector<std::string>& paths) {
-  std::vector<std::string> out;
-  for (const std::string& path : paths)
-    if (!is_comm_file(path)) out.push_back(path);
-  return out;
-}
-
 // A message for the user: to the sink, or to standard error without one.
 void tell(const derive::Derivation::MessageSink& messages, const std::string& text) {
   if (messages) messages(text);
@@ -34,11 +23,12 @@ void tell(const derive::Derivation::MessageSink& messages, const std::string& te
 
 }  // namespace
 
-void Simulation::start_environment(const EnvironmentOptions& options, const std::vector<std::string>& input_files,
+void Simulation::start_environment(const EnvironmentOptions& options, const std::vector<io::InputFile>& input_files,
                                    const derive::Derivation::MessageSink& messages) {
   std::string comm_file = options.comm_file;
-  for (const std::string& path : input_files) {
-    if (!is_comm_file(path)) continue;
+  for (const io::InputFile& file : input_files) {
+    if (file.kind != io::InputKind::Environment) continue;
+    const std::string& path = file.path;
     if (!comm_file.empty() && comm_file != path)
       throw ModelError(SourceLocation{path, 0, 0}, "a second communication specification file (the first is " +
                                                        comm_file + "); a model talks to one environment");
@@ -59,7 +49,7 @@ void Simulation::start_environment(const EnvironmentOptions& options, const std:
 Simulation::Simulation(const std::string& model_path, const SimulationOptions& options,
                        derive::Derivation::MessageSink messages)
     : model_path_(model_path) {
-  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(without_comm_files(options.input_files), options.build.compiler));
+  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(options.input_files, options.build.compiler));
   for (const std::string& warning : inputs_->warnings) tell(messages, warning + "\n");
   turtle_settings_ = inputs_->turtle_settings();
 

@@ -41,9 +41,10 @@ struct EnvironmentOptions {
 
 struct SimulationOptions {
   build::BuildOptions build;
-  // View, animation, colormap, material, contour and function files, in the
-  // order given (lpfg's command line): ids of contours and functions follow it.
-  std::vector<std::string> input_files;
+  // View, animation, colormap, material, contour, function and environment
+  // files, in the order given (lpfg's command line): ids of contours and
+  // functions follow it. A path alone is recognised by its extension.
+  std::vector<io::InputFile> input_files;
   EnvironmentOptions environment = {};
 };
 
@@ -89,7 +90,7 @@ class Simulation {
   // The environment, when the model has one (kept before the pass that uses it).
   std::shared_ptr<env::Field> field_;
   std::unique_ptr<EnvironmentPass> environment_pass_;
-  void start_environment(const EnvironmentOptions& options, const std::vector<std::string>& input_files,
+  void start_environment(const EnvironmentOptions& options, const std::vector<io::InputFile>& input_files,
                          const derive::Derivation::MessageSink& messages);
   std::unique_ptr<ModelRequests> requests_;
   std::string model_path_;

@@ -1,6 +1,7 @@
 // sylva — the command line over the engine's public API.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <iostream>
 
 #include "api/outputs.h"
+#include "api/reference_command_line.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
 #include "api/views.h"
@@ -39,8 +41,11 @@ void add_build_options(CLI::App& command, CommonOptions& o) {
 }
 
 struct RunOptions {
+  std::vector<std::string> files;  // only for the help text: the files are read by read_reference_command_line
   std::string model;
-  std::vector<std::string> inputs;
+  std::vector<sylva::io::InputFile> inputs;
+  bool interpreted_string = false;  // cpfg's -h
+  bool compile_only = false;        // lpfg's -c
   int steps = -1;
   std::string string_path, interpreted_path, turtle_path, frames_dir, axiom_from;
   std::vector<std::string> outputs;
@@ -70,6 +75,11 @@ bool check_verify_string(sylva::Simulation& simulation, const std::string& model
 int run_command(const RunOptions& r, const CommonOptions& o) {
   // Bad output names fail before any work is done.
   for (const std::string& path : r.outputs) sylva::check_output_path(path);
+  if (r.model.empty()) throw std::invalid_argument("no model: give the L-system file (.l) among the files");
+  if (r.compile_only) {
+    sylva::build::build_model(r.model, o.build);
+    return 0;
+  }
   sylva::SimulationOptions options{o.build, r.inputs};
   options.environment = r.environment;
   sylva::Simulation simulation(r.model, options);
@@ -103,9 +113,16 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   }
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
                             !r.frames_dir.empty();
-  if (!r.string_path.empty() || !other_output)
-    sylva::io::write_output_file(r.string_path.empty() ? "-" : r.string_path,
-                                 sylva::io::format_string(d.string(), d.types()));
+  if (!r.string_path.empty() || !other_output) {
+    const std::string path = r.string_path.empty() ? "-" : r.string_path;
+    if (r.interpreted_string) {  // cpfg's -h: the string after homomorphism
+      d.set_view(simulation.primary_view());
+      sylva::io::write_output_file(path, sylva::io::format_string(d.interpreted(), d.types()));
+      d.set_view(0);
+    } else {
+      sylva::io::write_output_file(path, sylva::io::format_string(d.string(), d.types()));
+    }
+  }
   return 0;
 }
 
@@ -124,11 +141,13 @@ int main(int argc, char** argv) {
   CommonOptions run_options;
   RunOptions r;
   CLI::App* run = app.add_subcommand("run", "Derive a model and write its string, geometry, drawings or images");
-  run->add_option("model", r.model, "The model file (L+C, usually *.l)")->required()->type_name("MODEL");
-  run->add_option("inputs", r.inputs,
-                  "Input files, recognised by extension in any order as lpfg takes them: view (.v), animation "
-                  "(.a), colormap (.map), materials (.mat), contours (.con, .cset), functions (.func, .fset), "
-                  "environment (.e)")
+  run->add_option("files", r.files,
+                  "The model (L+C or cpfg, usually *.l) and its input files, in any order as lpfg takes them, "
+                  "recognised by extension: view (.v), animation (.a), colormap (.map), materials (.mat), "
+                  "contours (.con, .cset), functions (.func, .fset), parameters (.vset), environment (.e); or "
+                  "as cpfg takes them: -m FILE (colormap), -M FILE (materials), -e FILE (environment), then the "
+                  "L-system, the view file and the animation file. The reference programs' other options are "
+                  "accepted (docs/command-line.md)")
       ->type_name("FILE...");
   run->add_option("-e,--environment", r.environment.comm_file,
                   "The communication specification file of the model's environment (cpfg's -e; a .e file among "
@@ -195,12 +214,45 @@ int main(int argc, char** argv) {
       ->type_name("FILE");
   add_build_options(*translate, translate_options);
 
+  // `run` takes lpfg's and cpfg's command lines as they are: their files and
+  // options are taken out first, and Sylva's own options left for CLI11.
+  std::vector<std::string> arguments(argv + 1, argv + argc);
+  std::vector<std::string> reference_outputs;
+  std::string reference_string;
+  if (!arguments.empty() && arguments[0] == "run") {
+    try {
+      sylva::ReferenceCommandLine line = sylva::read_reference_command_line(
+          {arguments.begin() + 1, arguments.end()}, [run](const std::string& name) -> std::optional<int> {
+            const CLI::Option* option = run->get_option_no_throw(name);
+            if (option == nullptr) return std::nullopt;
+            return option->get_type_size();
+          });
+      for (const std::string& note : line.notes) std::fprintf(stderr, "sylva: note: %s\n", note.c_str());
+      r.model = line.model;
+      r.inputs = line.inputs;
+      reference_outputs = line.outputs;
+      reference_string = line.string_path;
+      r.interpreted_string = line.interpreted_string;
+      r.compile_only = line.compile_only;
+      r.environment.clean_ea20 = line.clean_ea20;
+      if (line.width) r.output.width = *line.width;
+      if (line.height) r.output.height = *line.height;
+      arguments.assign(1, "run");
+      arguments.insert(arguments.end(), line.sylva_arguments.begin(), line.sylva_arguments.end());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sylva: error: %s\n", e.what());
+      return 109;  // CLI11's exit status for a usage error
+    }
+  }
   try {
-    app.parse(argc, argv);
+    std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
+    app.parse(arguments);
     if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run or translate)");
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  r.outputs.insert(r.outputs.end(), reference_outputs.begin(), reference_outputs.end());
+  if (r.string_path.empty()) r.string_path = reference_string;
 
   try {
     if (*run) return run_command(r, run_options);

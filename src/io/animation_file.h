@@ -8,14 +8,25 @@
 
 namespace sylva::io {
 
+// cpfg's "frame intervals: 1-50, 60-100 step 5": frames from..to every step.
+struct FrameInterval {
+  int from = 0;
+  int to = 0;
+  std::optional<int> step;  // the file's step: when absent
+};
+
 struct AnimationFile {
   std::string path;
   int first_frame = 0;
-  std::optional<int> last_frame;  // the derivation length when absent
+  std::optional<int> last_frame;  // the derivation length when absent (or negative in the file)
   int step = 1;                   // derivation steps between frames
   float swap_interval = 0;        // hundredths of a second between frames
+  std::vector<FrameInterval> intervals;  // cpfg; when given, they alone say which steps are frames
+  bool stepno_frame_numbers = false;     // lpfg's "frame numbers: stepno" (else consecutive)
+  std::string frame_dump_path;           // lpfg's "frame dump path:"
   bool double_buffer = true;
   bool clear_between_frames = true;
+  bool center_between_frames = false;   // cpfg
   bool hcenter_between_frames = false;
   bool scale_between_frames = false;
   bool new_view_between_frames = false;
@@ -27,8 +38,11 @@ struct AnimationFile {
   std::vector<int> frames(int derivation_length) const;
 };
 
-// Comments (/* */ and //) are allowed. A malformed value is a ModelError at
-// its line and column; an unknown command is a warning.
+// Read as tolerantly as lpfg and cpfg read it: they never stop on an
+// animation file, so neither does Sylva. Comments (/* */ and //) are
+// allowed; an unknown command or a value that cannot be read is a warning
+// at its line and column, and the setting keeps its default. A number is
+// read as C's %d reads one ("130 " and "12x" are 130 and 12).
 AnimationFile read_animation_file(const std::string& path);
 
 }  // namespace sylva::io

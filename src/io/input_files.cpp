@@ -12,9 +12,11 @@ namespace sylva::io {
 
 namespace {
 
-void only_one(std::optional<std::string>& seen, const std::string& path, const std::string& what) {
-  if (seen)
-    throw ModelError(SourceLocation{path, 0, 0}, "a second " + what + " (" + *seen + " is one already); lpfg takes one");
+// lpfg keeps one file of each of these kinds: a later one replaces it.
+void replace_earlier(std::optional<std::string>& seen, const std::string& path, const std::string& what,
+                     std::vector<std::string>& warnings) {
+  if (seen && *seen != path)
+    warnings.push_back(path + ": warning: a second " + what + "; it replaces " + *seen + ", as in lpfg and cpfg");
   seen = path;
 }
 
@@ -47,43 +49,68 @@ turtle::TurtleSettings InputFiles::turtle_settings() const {
   return settings;
 }
 
-InputFiles read_input_files(const std::vector<std::string>& paths, const std::string& compiler) {
+InputKind input_kind_of(const std::string& path) {
+  static const std::pair<const char*, InputKind> kinds[] = {
+      {"v", InputKind::View},          {"dr", InputKind::View},          {"a", InputKind::Animation},
+      {"map", InputKind::Colormap},    {"mat", InputKind::Materials},    {"con", InputKind::Contour},
+      {"cset", InputKind::ContourSet}, {"func", InputKind::Function},    {"fset", InputKind::FunctionSet},
+      {"tset", InputKind::TimedFunctionSet}, {"vset", InputKind::Parameters}, {"e", InputKind::Environment}};
+  const std::string ext = extension_of(path);
+  for (const auto& [name, kind] : kinds)
+    if (ext == name) return kind;
+  return InputKind::Unknown;
+}
+
+InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler) {
   InputFiles inputs;
   std::optional<std::string> view_path, animation_path, colour_path;
-  for (const std::string& path : paths) {
-    std::string ext = extension_of(path);
-    if (ext == "v" || ext == "dr") {
-      only_one(view_path, path, "view file");
-      inputs.view = read_view_file(path, compiler);
-    } else if (ext == "a") {
-      only_one(animation_path, path, "animation file");
-      inputs.animation = read_animation_file(path);
-    } else if (ext == "map") {
-      only_one(colour_path, path, "colormap or material file");
-      inputs.palette = read_colormap_file(path);
-    } else if (ext == "mat") {
-      only_one(colour_path, path, "colormap or material file");
-      inputs.palette = read_material_file(path);
-    } else if (ext == "con") {
-      inputs.contours.push_back(read_contour_file(path));
-    } else if (ext == "cset") {
-      for (geometry::Contour& c : read_contour_set_file(path)) inputs.contours.push_back(std::move(c));
-    } else if (ext == "func") {
-      inputs.functions.push_back(read_function_file(path));
-    } else if (ext == "fset") {
-      for (geometry::Function& f : read_function_set_file(path)) inputs.functions.push_back(std::move(f));
-    } else if (ext == "vset") {
-      for (Parameter& p : read_parameter_file(path)) inputs.parameters.push_back(std::move(p));
-    } else if (ext == "e" || ext == "tset") {
-      read_input_file(path, "input file");
-      inputs.warnings.push_back(path + ": warning: " + (ext == "e" ? "environment" : "timeline") +
-                                " files are not supported; ignored");
-    } else if (ext == "l") {
-      throw ModelError(SourceLocation{path, 0, 0}, "an L-system, not an input file: give it as the model");
-    } else {
-      throw ModelError(SourceLocation{path, 0, 0},
-                       "unknown kind of input file" + (ext.empty() ? std::string(" (no extension)") : " (." + ext + ")") +
-                           ": expected .v, .a, .map, .mat, .con, .cset, .func, .fset or .vset");
+  for (const InputFile& file : files) {
+    const std::string& path = file.path;
+    switch (file.kind) {
+      case InputKind::View:
+        replace_earlier(view_path, path, "view file", inputs.warnings);
+        inputs.view = read_view_file(path, compiler);
+        break;
+      case InputKind::Animation:
+        replace_earlier(animation_path, path, "animation file", inputs.warnings);
+        inputs.animation = read_animation_file(path);
+        break;
+      case InputKind::Colormap:
+      case InputKind::Materials:
+        if (file.slot != 1) {
+          read_input_file(path, "colour file");
+          inputs.warnings.push_back(path + ": warning: colour file " + std::to_string(file.slot) +
+                                    " is not used; only the first colormap or material set is");
+          break;
+        }
+        replace_earlier(colour_path, path, "colormap or material file", inputs.warnings);
+        inputs.palette = file.kind == InputKind::Colormap ? read_colormap_file(path) : read_material_file(path);
+        break;
+      case InputKind::Contour:
+        inputs.contours.push_back(read_contour_file(path));
+        break;
+      case InputKind::ContourSet:
+        for (geometry::Contour& c : read_contour_set_file(path)) inputs.contours.push_back(std::move(c));
+        break;
+      case InputKind::Function:
+        inputs.functions.push_back(read_function_file(path));
+        break;
+      case InputKind::FunctionSet:
+        for (geometry::Function& f : read_function_set_file(path)) inputs.functions.push_back(std::move(f));
+        break;
+      case InputKind::Parameters:
+        for (Parameter& p : read_parameter_file(path)) inputs.parameters.push_back(std::move(p));
+        break;
+      case InputKind::TimedFunctionSet:
+        read_input_file(path, "timeline function set file");
+        inputs.warnings.push_back(path + ": warning: timeline function sets are not supported; ignored");
+        break;
+      case InputKind::Environment:
+        break;  // the environment's own (EnvironmentOptions)
+      case InputKind::Unknown:
+        inputs.warnings.push_back(path + ": warning: not a kind of input file lpfg or cpfg reads (." +
+                                  extension_of(path) + "); ignored");
+        break;
     }
   }
   if (inputs.view) {

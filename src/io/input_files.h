@@ -16,6 +16,40 @@
 
 namespace sylva::io {
 
+// What an input file is to the run. lpfg recognises a file by its extension;
+// cpfg also by a flag before it (-m colormap, -M materials, -e environment)
+// or by its place (the second file is the view file, the third the
+// animation file), so the kind travels with the path.
+enum class InputKind {
+  View,          // .v (.dr, older)
+  Animation,     // .a
+  Colormap,      // .map
+  Materials,     // .mat
+  Contour,       // .con
+  ContourSet,    // .cset
+  Function,      // .func
+  FunctionSet,   // .fset
+  TimedFunctionSet,  // .tset (timeline functions, tfunc)
+  Parameters,    // .vset
+  Environment,   // .e: read by the engine's environment, not here
+  Unknown,
+};
+
+// The kind a file's extension names (Unknown for any other).
+InputKind input_kind_of(const std::string& path);
+
+struct InputFile {
+  std::string path;
+  InputKind kind = InputKind::Unknown;
+  // cpfg's colormap and material numbers (-m2 file, -M3 file); 1 otherwise.
+  int slot = 1;
+
+  InputFile(std::string file_path) : path(std::move(file_path)), kind(input_kind_of(path)) {}  // NOLINT: a path is a file
+  InputFile(const char* file_path) : InputFile(std::string(file_path)) {}                      // NOLINT
+  InputFile(std::string file_path, InputKind file_kind, int number = 1)
+      : path(std::move(file_path)), kind(file_kind), slot(number) {}
+};
+
 struct InputFiles {
   std::optional<ViewFile> view;
   std::optional<AnimationFile> animation;
@@ -39,11 +73,11 @@ struct InputFiles {
   turtle::TurtleSettings turtle_settings() const;
 };
 
-// .v (.dr, older) view, .a animation, .map colormap, .mat materials, .con
-// and .cset contours, .func and .fset functions, .vset parameters. The
-// environment (.e) and timeline (.tset) files lpfg also takes are read past
-// with a warning; any other extension, two view, animation or colour files,
-// or a file that cannot be read is a ModelError naming the file.
-InputFiles read_input_files(const std::vector<std::string>& paths, const std::string& compiler = "");
+// Reads every file as its kind says, in the order given. As lpfg does, a
+// second view, animation or colour file replaces the first (with a warning),
+// .e files are left to the environment, and a file of no known kind is read
+// past with a warning. A file that cannot be read, or is not what its kind
+// says, is a ModelError naming the file.
+InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler = "");
 
 }  // namespace sylva::io
