@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
           {arguments.begin() + 1, arguments.end()}, [run](const std::string& name) -> std::optional<int> {
             const CLI::Option* option = run->get_option_no_throw(name);
             if (option == nullptr) return std::nullopt;
-            return option->get_type_size();
+            return option->get_expected_max() == 0 ? 0 : option->get_type_size();  // a flag, or one value
           });
       for (const std::string& note : line.notes) std::fprintf(stderr, "sylva: note: %s\n", note.c_str());
       r.model = line.model;

@@ -44,7 +44,7 @@ Model load(const std::string& name, const std::string& text, const std::string& 
     fs::copy_file(data_path(file), fs::path(m.dir) / fs::path(file).filename(), fs::copy_options::overwrite_existing);
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
-  m.simulation = std::make_unique<Simulation>(m.dir + "/lsystem.l", SimulationOptions{build, inputs});
+  m.simulation = std::make_unique<Simulation>(m.dir + "/lsystem.l", SimulationOptions{build, {inputs.begin(), inputs.end()}});
   return m;
 }
 

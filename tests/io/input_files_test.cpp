@@ -40,10 +40,39 @@ TEST(AnimationFileTest, ReadsEveryCommand) {
   EXPECT_TRUE(a.display_on_request);
   EXPECT_FALSE(a.hcenter_between_frames);
   EXPECT_FALSE(a.scale_between_frames);
+  EXPECT_TRUE(a.stepno_frame_numbers);
   EXPECT_EQ(a.frames(20), (std::vector<int>{2, 5, 8}));
   EXPECT_EQ(a.frames(6), (std::vector<int>{2, 5}));
-  ASSERT_EQ(a.warnings.size(), 1u);
-  EXPECT_EQ(a.warnings[0], input("plant.a") + ":10:1: warning: unknown animation command 'frame intervals' ignored");
+  EXPECT_TRUE(a.warnings.empty());
+}
+
+// The editors write "last frame: -1" for "up to the derivation length";
+// lpfg and cpfg read numbers with %d, so "130 " and huge values are read too.
+TEST(AnimationFileTest, ReadsTheEditorsDialect) {
+  std::string dir = test::make_temp_dir("animation-dialect");
+  io::AnimationFile minus_one = io::read_animation_file(write_file(dir, "a.a", "first frame: 1\nlast frame: -1\n"));
+  EXPECT_FALSE(minus_one.last_frame);
+  EXPECT_EQ(minus_one.frames(3), (std::vector<int>{1, 2, 3}));
+  io::AnimationFile huge = io::read_animation_file(write_file(dir, "b.a", "last frame: 2147483647\nstep: 2 \n"));
+  EXPECT_EQ(huge.last_frame, 2147483647);
+  EXPECT_EQ(huge.frames(5), (std::vector<int>{0, 2, 4}));
+  io::AnimationFile trailing = io::read_animation_file(write_file(dir, "c.a", "last frame: 130 \nframe numbers: consecutive\n"));
+  EXPECT_EQ(trailing.last_frame, 130);
+  EXPECT_FALSE(trailing.stepno_frame_numbers);
+  EXPECT_TRUE(trailing.warnings.empty());
+}
+
+// cpfg's frame intervals choose the frames on their own: 1, then 3 to 9 every
+// 3 steps (3, 6, 9), then 12 and 13 with the file's step of 1.
+TEST(AnimationFileTest, ReadsCpfgFrameIntervals) {
+  std::string dir = test::make_temp_dir("animation-intervals");
+  io::AnimationFile a =
+      io::read_animation_file(write_file(dir, "i.a", "step: 1\nframe intervals: 1, 3-9 step 3, 12-13 rotate 0 1 0\n"));
+  ASSERT_EQ(a.intervals.size(), 3u);
+  EXPECT_EQ(a.first_frame, 1);
+  EXPECT_EQ(a.last_frame, 13);
+  EXPECT_EQ(a.frames(20), (std::vector<int>{1, 3, 6, 9, 12, 13}));
+  EXPECT_EQ(a.frames(7), (std::vector<int>{1, 3, 6}));
 }
 
 TEST(AnimationFileTest, DefaultsWhenCommandsAreAbsent) {
@@ -59,14 +88,22 @@ TEST(AnimationFileTest, DefaultsWhenCommandsAreAbsent) {
   EXPECT_EQ(a.frames(3), (std::vector<int>{0, 1, 2, 3}));
 }
 
-TEST(AnimationFileTest, BadInputsNameFileLineAndColumn) {
+// lpfg and cpfg never stop on an animation file: a value they cannot read is
+// a warning at its line and column, and the setting keeps its default.
+TEST(AnimationFileTest, BadValuesAreWarningsAtFileLineAndColumn) {
   std::string dir = test::make_temp_dir("animation-bad");
   std::string step = write_file(dir, "step.a", "first frame: 1\n  step: 0\n");
-  EXPECT_EQ(error_of([&] { io::read_animation_file(step); }),
-            step + ":2:9: error: expected a positive number of steps between frames, found '0'");
-  std::string flag = write_file(dir, "flag.a", "double buffer: maybe\n");
-  EXPECT_EQ(error_of([&] { io::read_animation_file(flag); }),
-            flag + ":1:16: error: expected on or off after 'double buffer:', found 'maybe'");
+  io::AnimationFile a = io::read_animation_file(step);
+  EXPECT_EQ(a.step, 1);
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_EQ(a.warnings[0], step + ":2:9: warning: expected a positive number of steps between frames after 'step:', found '0'; ignored");
+  std::string flag = write_file(dir, "flag.a", "double buffer: maybe\nfirst frame: x\n");
+  io::AnimationFile b = io::read_animation_file(flag);
+  EXPECT_TRUE(b.double_buffer);
+  EXPECT_EQ(b.first_frame, 0);
+  ASSERT_EQ(b.warnings.size(), 2u);
+  EXPECT_EQ(b.warnings[0], flag + ":1:16: warning: expected on or off after 'double buffer:', found 'maybe'; ignored");
+  EXPECT_EQ(b.warnings[1], flag + ":2:14: warning: expected the first frame after 'first frame:', found 'x'; ignored");
   std::string missing = dir + "/none.a";
   EXPECT_EQ(error_of([&] { io::read_animation_file(missing); }), missing + ": error: cannot open the animation file");
 }
@@ -278,9 +315,8 @@ TEST(InputFilesTest, ReadsEveryKindInAnyOrder) {
   EXPECT_EQ(in.surfaces[0].v_divisions, 4);
   EXPECT_EQ(in.surfaces[1].name, "petal");
   EXPECT_FLOAT_EQ(in.surfaces[1].size, 1);
-  // The view file's warning (its "angle increment:" is read, for cpfg
-  // models) and the animation file's one.
-  EXPECT_EQ(in.warnings.size(), 2u);
+  // The view file's warning (its "angle increment:" is read, for cpfg models).
+  EXPECT_EQ(in.warnings.size(), 1u);
   turtle::TurtleSettings t = in.turtle_settings();
   EXPECT_EQ(t.surfaces, &in.surfaces);
   EXPECT_EQ(t.contours, &in.contours);
@@ -294,14 +330,23 @@ TEST(InputFilesTest, NoFilesGiveTheDefaults) {
   EXPECT_EQ(in.turtle_settings().contour_sides, 16);  // the manual's default
 }
 
-TEST(InputFilesTest, UnknownExtensionsAndSecondViewFilesAreErrors) {
+// lpfg reads past a file it does not know and keeps the last file of each
+// kind; both are warnings here.
+TEST(InputFilesTest, UnknownExtensionsAreIgnoredAndALaterViewFileWins) {
   std::string dir = test::make_temp_dir("inputs-bad");
   std::string txt = write_file(dir, "notes.txt", "hello\n");
-  EXPECT_EQ(error_of([&] { io::read_input_files({txt}); }),
-            txt + ": error: unknown kind of input file (.txt): expected .v, .a, .map, .mat, .con, .cset, .func, .fset or .vset");
-  std::string a = write_file(dir, "a.v", "\n"), b = write_file(dir, "b.v", "\n");
-  EXPECT_EQ(error_of([&] { io::read_input_files({a, b}); }),
-            b + ": error: a second view file (" + a + " is one already); lpfg takes one");
+  io::InputFiles unknown = io::read_input_files({txt});
+  ASSERT_EQ(unknown.warnings.size(), 1u);
+  EXPECT_EQ(unknown.warnings[0], txt + ": warning: not a kind of input file lpfg or cpfg reads (.txt); ignored");
+  std::string a = write_file(dir, "a.v", "contour sides: 5\n"), b = write_file(dir, "b.v", "contour sides: 7\n");
+  io::InputFiles two = io::read_input_files({a, b});
+  EXPECT_EQ(two.turtle_settings().contour_sides, 7);
+  ASSERT_EQ(two.warnings.size(), 1u);
+  EXPECT_EQ(two.warnings[0], b + ": warning: a second view file; it replaces " + a + ", as in lpfg and cpfg");
+  // A colormap given as cpfg's -m2 is read by its flag whatever its name.
+  std::string map2 = write_file(dir, "plant.map2", std::string(768, '\x40'));
+  io::InputFiles cpfg = io::read_input_files({io::InputFile(map2, io::InputKind::Colormap, 1)});
+  EXPECT_EQ(cpfg.palette.color(3), (geometry::Rgb{64 / 255.0f, 64 / 255.0f, 64 / 255.0f}));
   EXPECT_EQ(error_of([&] { io::read_input_files({dir + "/gone.con"}); }), dir + "/gone.con: error: cannot open the contour file");
 }
 
