@@ -6,7 +6,7 @@
 //         -e env), then the L-system, the view file and the animation file
 //         in that order, whatever their names end in.
 // Sylva's own options are left where they are for the command line's parser;
-// see docs/command-line.md for every reference option and what it does here.
+// see docs/reference-dialects.md for every reference option and what it does here.
 #pragma once
 
 #include <functional>

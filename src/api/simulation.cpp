@@ -11,6 +11,7 @@
 #include "env/environment.h"
 #include "io/input_text.h"
 #include "support/diagnostic.h"
+#include "support/repeated_warnings.h"
 
 namespace sylva {
 namespace {
@@ -47,8 +48,11 @@ void Simulation::start_environment(const EnvironmentOptions& options, const std:
 }
 
 Simulation::Simulation(const std::string& model_path, const SimulationOptions& options,
-                       derive::Derivation::MessageSink messages)
+                       derive::Derivation::MessageSink user_messages)
     : model_path_(model_path) {
+  warnings_ = std::make_shared<RepeatedWarnings>(
+      user_messages ? std::move(user_messages) : [](const std::string& text) { std::fputs(text.c_str(), stderr); });
+  derive::Derivation::MessageSink messages = [warnings = warnings_](const std::string& text) { (*warnings)(text); };
   inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(options.input_files, options.build.compiler));
   for (const std::string& warning : inputs_->warnings) tell(messages, warning + "\n");
   turtle_settings_ = inputs_->turtle_settings();
@@ -93,6 +97,7 @@ Simulation::Simulation(const std::string& model_path, const build::BuildOptions&
     : Simulation(model_path, SimulationOptions{options, {}}, std::move(messages)) {}
 
 Simulation::~Simulation() {
+  warnings_->finish();
   if (field_) {
     try {
       field_->finish();

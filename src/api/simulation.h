@@ -19,6 +19,7 @@
 namespace sylva {
 
 class InputAnswers;
+class RepeatedWarnings;
 class EnvironmentPass;
 class ModelRequests;
 struct OutputOptions;
@@ -82,6 +83,9 @@ class Simulation {
   bool take_display_request();
 
  private:
+  // Every message of the run passes here: a warning that repeats is told once,
+  // with its count when the simulation ends.
+  std::shared_ptr<RepeatedWarnings> warnings_;
   std::unique_ptr<io::InputFiles> inputs_;
   std::unique_ptr<InputAnswers> answers_;
   turtle::TurtleSettings turtle_settings_;

@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
                   "contours (.con, .cset), functions (.func, .fset), parameters (.vset), environment (.e); or "
                   "as cpfg takes them: -m FILE (colormap), -M FILE (materials), -e FILE (environment), then the "
                   "L-system, the view file and the animation file. The reference programs' other options are "
-                  "accepted (docs/command-line.md)")
+                  "accepted (docs/reference-dialects.md)")
       ->type_name("FILE...");
   run->add_option("-e,--environment", r.environment.comm_file,
                   "The communication specification file of the model's environment (cpfg's -e; a .e file among "
