@@ -47,10 +47,27 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
   contour.name = default_name;
   contour.curve = geometry::Contour::Curve::BSpline;
   int count = -1;
-  bool have_type = false;
+  bool have_type = false, have_points = false;
   // The keys come in a fixed order, but "name:", "background:",
   // "backgroundXY:" and "samples:" depend on the version: read what is there.
+  // The editors write the point list after "points: n m" or, in version 1.3,
+  // after the "type:" and "samples:" lines that follow it.
   while (!in.at_end()) {
+    if (count >= 0 && !have_points && in.next_is_number()) {
+      for (int i = 0; i < count; ++i) {
+        std::string what = "control point " + std::to_string(i + 1) + " of " + std::to_string(count);
+        geometry::Vec3 p = in.vec3(what);
+        Word m_word = in.peek();
+        int multiplicity = in.integer("the multiplicity of " + what);
+        if (multiplicity < 1 || multiplicity > 3)
+          in.fail(m_word, "expected a multiplicity of 1 to 3, found '" + m_word.text + "'");
+        // A point of multiplicity m is m coincident B-spline control points.
+        for (int k = 0; k < multiplicity; ++k) contour.points.push_back(p);
+        contour.multiplicities.push_back(multiplicity);
+      }
+      have_points = true;
+      continue;
+    }
     std::string key = to_lower(in.peek().text);
     if (key == "cver" || key == "contourgalleryver") break;
     Word key_word = in.next("a key");
@@ -63,17 +80,6 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
       count = in.integer("the number of control points");
       if (count < 1) in.fail(count_word, "expected at least 1 control point, found " + count_word.text);
       in.integer("the sum of the multiplicities");
-      for (int i = 0; i < count; ++i) {
-        std::string what = "control point " + std::to_string(i + 1) + " of " + std::to_string(count);
-        geometry::Vec3 p = in.vec3(what);
-        Word m_word = in.peek();
-        int multiplicity = in.integer("the multiplicity of " + what);
-        if (multiplicity < 1 || multiplicity > 3)
-          in.fail(m_word, "expected a multiplicity of 1 to 3, found '" + m_word.text + "'");
-        // A point of multiplicity m is m coincident B-spline control points.
-        for (int k = 0; k < multiplicity; ++k) contour.points.push_back(p);
-        contour.multiplicities.push_back(multiplicity);
-      }
     } else if (key == "type:") {
       contour.closed = closed_type(in, in.next("the contour type"));
       have_type = true;
@@ -86,6 +92,7 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
       in.fail(key_word, "expected a contour key (name:, points:, type:, samples:), found '" + key_word.text + "'");
     }
   }
+  if (count >= 0 && !have_points) in.expected("control point 1 of " + std::to_string(count) + " (x)");
   if (count < 0) in.expected("'points:'");
   if (!have_type) in.expected("'type:'");
   if (contour.points.size() < 2) in.fail(in.peek(), "expected at least 2 control points in contour '" + contour.name + "'");

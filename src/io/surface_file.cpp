@@ -44,6 +44,15 @@ geometry::BezierSurface read_surface_file(const std::string& path) {
   surface.name = stem_of(path);
   for (const char* bound : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"})
     in.number(std::string("the bounding box's ") + bound);
+  // The older editors' "PRECISION S: s T: t" line: lpfg reads past it and
+  // takes the precision from the view file, as Sylva does.
+  if (to_lower(in.peek().text) == "precision") {
+    in.next("PRECISION");
+    in.expect("S:");
+    in.integer("the precision along s");
+    in.expect("T:");
+    in.integer("the precision along t");
+  }
   in.expect("CONTACT");
   in.expect("POINT");
   surface.contact = labelled_point(in, "contact point");

@@ -205,6 +205,23 @@ TEST(SurfaceFileTest, BadInputsNameFileLineAndColumn) {
   EXPECT_EQ(error_of([&] { io::read_surface_file(dir + "/gone.s"); }), dir + "/gone.s: error: cannot open the surface file");
 }
 
+// Surfaces of the older editors carry "PRECISION S: s T: t" after the
+// bounding box; lpfg's reader skips that line (lpfg/surface.cpp).
+TEST(SurfaceFileTest, ReadsPastThePrecisionLine) {
+  std::string dir = test::make_temp_dir("surface-precision");
+  std::string patch = "p1\nTOP COLOR: 1 DIFFUSE: 1.0 BOTTOM COLOR: 1 DIFFUSE: 1.0\nAL: ~ A: ~ AR: ~\nL: ~ R: ~\nBL: ~ B: ~ BR: ~\n";
+  for (int i = 0; i < 16; ++i) patch += std::to_string(i % 4) + " " + std::to_string(i / 4) + " 0\n";
+  std::string path = write_file(dir, "bud.s",
+                                "0 3 0 3 0 0\nPRECISION S: 5 T: 5\nCONTACT POINT  X: 1.5 Y: 0.00 Z: 0.00\n"
+                                "END POINT  X: 1.5 Y: 3.00 Z: 0.00\nHEADING  X: 0.00 Y: 1.00 Z: 0.00\n"
+                                "UP  X: 0.00 Y: 0.00 Z: 1.00\nSIZE: 3.0\n" + patch);
+  geometry::BezierSurface s = io::read_surface_file(path);
+  expect_vec(s.contact, {1.5f, 0, 0});
+  EXPECT_FLOAT_EQ(s.size, 3);
+  ASSERT_EQ(s.patches.size(), 1u);
+  expect_vec(s.patches[0].points[15], {3, 3, 0});
+}
+
 // --- Contours -----------------------------------------------------------------
 
 TEST(ContourFileTest, ReadsTheLatestFormatWithMultiplicities) {
@@ -219,6 +236,24 @@ TEST(ContourFileTest, ReadsTheLatestFormatWithMultiplicities) {
   expect_vec(c.points[2], {1, 0, 0});
   expect_vec(c.points[3], {1, 1, 0});
   expect_vec(c.points[5], {0, 1, 0.5f});
+}
+
+// The contour editor writes "type:" and "samples:" between "points:" and the
+// point list (lpfg's reader takes the lines in that order: name, points, type,
+// samples, then one line per point).
+TEST(ContourFileTest, ReadsTypeAndSamplesBeforeThePoints) {
+  std::string dir = test::make_temp_dir("contour-editor-order");
+  std::string set = write_file(dir, "c.cset",
+                               "contourgalleryver 1 1\nitems: 1\ncver 1 3\nname: calyx\npoints: 3 5\ntype: or\n"
+                               "samples: 8\n-2 3 0 3\n0 5 0 1\n2 3 0 1\n");
+  std::vector<geometry::Contour> contours = io::read_contour_set_file(set);
+  ASSERT_EQ(contours.size(), 1u);
+  EXPECT_EQ(contours[0].name, "calyx");
+  EXPECT_FALSE(contours[0].closed);
+  EXPECT_EQ(contours[0].samples, 8);
+  ASSERT_EQ(contours[0].points.size(), 5u);  // multiplicities 3 + 1 + 1
+  expect_vec(contours[0].points[2], {-2, 3, 0});
+  expect_vec(contours[0].points[4], {2, 3, 0});
 }
 
 TEST(ContourFileTest, ReadsTheFirstFormat) {
