@@ -155,7 +155,7 @@ struct ViewFile {
   std::vector<MeshCommand> meshes;
   std::vector<std::string> textures;  // paths relative to the view file's folder; ids from 0
   // cpfg's contours, functions and curves, in the file's order; read by
-  // read_input_files.
+  // read_input_files (io/view_file_inputs.h).
   std::vector<ContourCommand> contour_files;
   std::vector<FunctionCommand> function_files;
   std::vector<FunctionCommand> curve_files;
@@ -163,8 +163,7 @@ struct ViewFile {
   std::string font = "-*-courier-bold-r-*-*-12-*-*-*-*-*-*-*";
   WinFont winfont;
 
-  // cpfg's "initial color:" and "initial line width:", which cpfg view files
-  // carry into lpfg models.
+  // cpfg's "initial color:" and "initial line width:" (lpfg reads neither).
   std::optional<int> initial_color;
   // Their second values, the back side's (cpfg's @; and @,).
   std::optional<int> initial_back_color, back_color_increment;
@@ -179,8 +178,8 @@ struct ViewFile {
   float scale_multiplier = 1;
   CpfgOldTropism old_tropism;
 
-  // "file:line:column: warning: ..." for commands lpfg does not know, and
-  // values it would ignore.
+  // "file:line:column: warning: ..." for commands the program does not
+  // read, values it cannot read, and effects Sylva does not reproduce.
   std::vector<std::string> warnings;
 
   // What the turtle takes from the view file; the caller fills `surfaces`

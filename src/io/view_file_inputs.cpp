@@ -1,6 +1,7 @@
 #include "io/view_file_inputs.h"
 
 #include "io/contour_file.h"
+#include "io/curve_file.h"
 #include "io/function_file.h"
 #include "io/surface_file.h"
 #include "support/diagnostic.h"
@@ -105,7 +106,7 @@ void read_curves(InputFiles& inputs) {
   const ViewFile& view = *inputs.view;
   for (const FunctionCommand& c : view.curve_files) {
     try {
-      inputs.curves.push_back(read_contour_file(c.path));
+      inputs.curves.push_back(read_curve_file(c.path));
     } catch (const ModelError& e) {
       inputs.warnings.push_back(warning(view, c, e, "the curve is left out"));
     }

@@ -290,6 +290,38 @@ TEST(CpfgViewFileInputsTest, FunctionsInOrderASetReplacingThoseBefore) {
   EXPECT_EQ(b.functions[1].name, "beta");
 }
 
+// cpfg's curve files (CCurveXYZ::readCurve): keys, then the points, each
+// repeated by its multiplicity (the fourth number); a phantom B-spline gets a
+// point mirrored beyond each end (createPPoints).
+TEST(CpfgViewFileInputsTest, CurvesInCpfgsCurveFormat) {
+  std::string dir = test::make_temp_dir("cpfg-inputs-curves");
+  write_file(dir, "open.con",
+             "version: 1.4\ncontact: 0 0 0\nend: 0 0 0\nheading: 0 1 0\nup: 0 0 -1\nsize: 1\npoints: 4\n"
+             "range: 0.0 1.0\ndimension: 4\ntype: bspline\n0 0 0 3\n1 0 0 1\n1 1 0 1\n0 1 0 3\n");
+  write_file(dir, "phantom.con", "version: 1.4\npoints: 3\ndimension: 2\ntype: bspline-phantom\n0 0\n1 0\n1 1\n");
+  write_file(dir, "bezier.con", "version: 1.4\npoints: 4\ndimension: 2\ntype: bezier\n0 0\n1 0\n1 1\n0 1\n");
+  write_file(dir, "cuspy.con", kContour);
+  std::string view = write_file(dir, "v.v", "curve: open.con\ncurve: phantom.con\ncurve: bezier.con\ncurve: cuspy.con 50\n");
+  io::InputFiles in = io::read_input_files({view}, "", io::ViewDialect::Cpfg);
+  ASSERT_EQ(in.curves.size(), 3u);
+  EXPECT_TRUE(in.contours.empty());  // curves are not the turtle's contours
+  const geometry::Contour& open = in.curves[0];
+  EXPECT_FALSE(open.closed);
+  ASSERT_EQ(open.points.size(), 8u);
+  expect_vec(open.points[2], {0, 0, 0});
+  expect_vec(open.points[3], {1, 0, 0});
+  expect_vec(open.points[7], {0, 1, 0});
+  const geometry::Contour& phantom = in.curves[1];
+  ASSERT_EQ(phantom.points.size(), 5u);
+  expect_vec(phantom.points[0], {-1, 0, 0});
+  expect_vec(phantom.points[4], {1, 2, 0});
+  EXPECT_EQ(in.curves[2].name, "c");
+  ASSERT_EQ(in.warnings.size(), 1u);
+  EXPECT_NE(in.warnings[0].find("bezier.con:4:7: warning: curves of type 'bezier' are not supported; the curve is left out"),
+            std::string::npos)
+      << in.warnings[0];
+}
+
 TEST(CpfgViewFileInputsTest, AnLpfgModelsViewFileNamesNoFunctions) {
   std::string dir = test::make_temp_dir("lpfg-inputs-functions");
   write_file(dir, "first.func", function_named("first"));
