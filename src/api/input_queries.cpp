@@ -35,7 +35,7 @@ bool answer_input_query(void* answers, int query, int id, const double* in, doub
 
 const std::vector<Vec3>& InputAnswers::curve(int id) {
   std::vector<Vec3>& samples = curves_[static_cast<std::size_t>(id - 1)];
-  if (samples.empty()) samples = files_.contours[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
+  if (samples.empty()) samples = curve_source()[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
   return samples;
 }
 
@@ -102,9 +102,9 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
     }
     case abi::kQueryCurvePoint:
     case abi::kQueryCurveNormal: {
-      if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
+      if (id < 1 || id > static_cast<int>(curve_source().size())) return false;
       Vec3 tangent;
-      Vec3 p = curve_point(inputs.contours[static_cast<std::size_t>(id - 1)], curve(id), in[0], &tangent);
+      Vec3 p = curve_point(curve_source()[static_cast<std::size_t>(id - 1)], curve(id), in[0], &tangent);
       // The normal lies in the curve's plane, to the right of the direction of travel.
       Vec3 v = query == abi::kQueryCurvePoint ? p : Vec3{tangent.y, -tangent.x, 0};
       out[0] = v.x;
@@ -113,9 +113,9 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
       return true;
     }
     case abi::kQueryCurveLength: {
-      if (id < 1 || id > static_cast<int>(inputs.contours.size())) return false;
+      if (id < 1 || id > static_cast<int>(curve_source().size())) return false;
       const std::vector<Vec3>& points = curve(id);
-      const geometry::Contour& contour = inputs.contours[static_cast<std::size_t>(id - 1)];
+      const geometry::Contour& contour = curve_source()[static_cast<std::size_t>(id - 1)];
       double length = 0;
       for (std::size_t k = 1; k < points.size(); ++k) length += geometry::length(points[k] - points[k - 1]);
       if (contour.closed && points.size() > 1) length += geometry::length(points.front() - points.back());

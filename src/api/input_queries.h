@@ -2,6 +2,8 @@
 // GetSurface ...; LPFG manual 6.2) from the files read at start.
 #pragma once
 
+#include <algorithm>
+
 #include "io/input_files.h"
 
 namespace sylva {
@@ -12,13 +14,19 @@ namespace sylva {
 // draws the changed ones.
 class InputAnswers {
  public:
-  explicit InputAnswers(io::InputFiles& files) : files_(files), curves_(files.contours.size()) {}
+  explicit InputAnswers(io::InputFiles& files)
+      : files_(files), curves_(std::max(files.contours.size(), files.curves.size())) {}
   bool answer(int query, int id, const double* in, double* out);
   // Every contour back as read (a new run).
   void restore_curves();
 
  private:
-  // Contour id (from 1) sampled evenly by arc length; empty if no such id.
+  // What the curve functions read: cpfg's curves where a cpfg view file
+  // gives them, else the contours.
+  const std::vector<geometry::Contour>& curve_source() const {
+    return files_.curves.empty() ? files_.contours : files_.curves;
+  }
+  // Curve id (from 1) sampled evenly by arc length; empty if no such id.
   const std::vector<geometry::Vec3>& curve(int id);
   bool change_curve(int query, int id, const double* in);
 

@@ -10,6 +10,7 @@
 #include "turtle/interpreter.h"
 #include "env/environment.h"
 #include "io/input_text.h"
+#include "lang/translator.h"
 #include "support/diagnostic.h"
 #include "support/repeated_warnings.h"
 
@@ -20,6 +21,19 @@ namespace {
 void tell(const derive::Derivation::MessageSink& messages, const std::string& text) {
   if (messages) messages(text);
   else std::fputs(text.c_str(), stderr);
+}
+
+// A model's view file is read as its program reads it: a cpfg model's as
+// cpfg does, an L+C model's as lpfg does.
+io::ViewDialect view_dialect(const std::string& model_path, const std::string& language) {
+  if (language == "cpfg") return io::ViewDialect::Cpfg;
+  if (language == "lc") return io::ViewDialect::Lpfg;
+  try {
+    return lang::looks_like_cpfg(io::read_input_file(model_path, "model")) ? io::ViewDialect::Cpfg
+                                                                             : io::ViewDialect::Lpfg;
+  } catch (const ModelError&) {
+    return io::ViewDialect::Lpfg;  // the build says what is wrong with the model file
+  }
 }
 
 }  // namespace
@@ -53,7 +67,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   warnings_ = std::make_shared<RepeatedWarnings>(
       user_messages ? std::move(user_messages) : [](const std::string& text) { std::fputs(text.c_str(), stderr); });
   derive::Derivation::MessageSink messages = [warnings = warnings_](const std::string& text) { (*warnings)(text); };
-  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(options.input_files, options.build.compiler));
+  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(
+      options.input_files, options.build.compiler, view_dialect(model_path, options.build.language)));
   for (const std::string& warning : inputs_->warnings) tell(messages, warning + "\n");
   turtle_settings_ = inputs_->turtle_settings();
 

@@ -4,45 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/camera_matrices.h"
+
 namespace sylva::geometry {
 
 namespace {
-
-// gluLookAt with an orthonormal basis already worked out.
-Mat4 look_at(Vec3 eye, Vec3 f, Vec3 u, Vec3 r) {
-  Mat4 m{};
-  m[0] = r.x, m[4] = r.y, m[8] = r.z, m[12] = -dot(r, eye);
-  m[1] = u.x, m[5] = u.y, m[9] = u.z, m[13] = -dot(u, eye);
-  m[2] = -f.x, m[6] = -f.y, m[10] = -f.z, m[14] = dot(f, eye);
-  m[15] = 1;
-  return m;
-}
-
-// glOrtho.
-Mat4 ortho(float l, float r, float b, float t, float n, float f) {
-  Mat4 m{};
-  m[0] = 2 / (r - l);
-  m[5] = 2 / (t - b);
-  m[10] = -2 / (f - n);
-  m[12] = -(r + l) / (r - l);
-  m[13] = -(t + b) / (t - b);
-  m[14] = -(f + n) / (f - n);
-  m[15] = 1;
-  return m;
-}
-
-// glFrustum.
-Mat4 frustum(float l, float r, float b, float t, float n, float f) {
-  Mat4 m{};
-  m[0] = 2 * n / (r - l);
-  m[5] = 2 * n / (t - b);
-  m[8] = (r + l) / (r - l);
-  m[9] = (t + b) / (t - b);
-  m[10] = -(f + n) / (f - n);
-  m[11] = -1;
-  m[14] = -2 * f * n / (f - n);
-  return m;
-}
 
 std::array<float, 4> transform(const Mat4& m, std::array<float, 4> v) {
   std::array<float, 4> out{};
@@ -51,19 +17,16 @@ std::array<float, 4> transform(const Mat4& m, std::array<float, 4> v) {
   return out;
 }
 
-std::array<Vec3, 8> corners(const Box& b) {
-  std::array<Vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[i] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
-  return c;
-}
-
 bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
 Camera::Camera(const ViewParameters& params, const Box& scene_bounds, int width, int height)
     : width_(std::max(width, 1)), height_(std::max(height, 1)), perspective_(params.perspective) {
+  if (params.cpfg) {
+    frame_cpfg(params, scene_bounds);
+    return;
+  }
   Box box = params.box ? *params.box : scene_bounds;
   if (box.empty() || !finite(box.min) || !finite(box.max)) box = Box{{-1, -1, -1}, {1, 1, 1}};
 
@@ -110,11 +73,11 @@ Camera::Camera(const ViewParameters& params, const Box& scene_bounds, int width,
     zmin = std::min(zmin, z), zmax = std::max(zmax, z);
   }
   if (params.front_distance && params.back_distance) {
-    near_ = *params.front_distance, far_ = *params.back_distance;
-    if (!perspective_) {
-      float centre_distance = dot(centre - eye_, f);
-      near_ += centre_distance, far_ += centre_distance;
-    }
+    // lpfg keeps only the distance between the two planes: its clipping slab
+    // is centred on the point looked at, |back - front| / 2 deep either way
+    // (Projection::SetVolume), whichever the order of the two.
+    const float half = std::fabs(*params.back_distance - *params.front_distance) / 2;
+    near_ = distance - half, far_ = distance + half;
   } else {
     // A flat model has no depth of its own: keep a sliver around it.
     float margin = std::max((zmax - zmin) * 0.01f, radius * 0.01f);

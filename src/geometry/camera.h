@@ -10,6 +10,23 @@
 
 namespace sylva::geometry {
 
+// cpfg's view (CPFG manual 8.1.2), framed as cpfg frames it (its SetView and
+// CalculateWindow): the eye on the line from the view reference point through
+// the viewpoint, at 1/scale of their distance; up is world y as seen along
+// that line, turned by `twist`. In parallel projection the box (or the
+// model's bounds) fills the image, centred, times `scale`; in perspective
+// only the viewing angle and the eye's place set the size.
+struct CpfgView {
+  Vec3 viewpoint{0, 0, 1};
+  Vec3 reference_point{0, 0, 0};
+  int twist = 0;              // tenths of a degree
+  float viewing_angle = 45;   // degrees, in y; perspective only
+  float scale = 1;            // "scale factor:"
+  // Distances from the eye along the view to the clipping planes.
+  float front_distance = -100000, back_distance = 100000;
+  std::optional<Box> box;     // "box: x: ... y: ... z: ..."; else the model's bounds
+};
+
 struct ViewParameters {
   bool perspective = false;
   Vec3 dir{0, 0, -1};
@@ -22,10 +39,20 @@ struct ViewParameters {
   float shift = 1;
   float scale = 0.9f;  // fraction of the image the model fills
   std::optional<Box> box;  // the box to frame; the Scene's bounds when absent
-  // Both or neither (8.1.1): from the viewer in perspective, from the box's
-  // centre along the view direction in parallel projection.
+  // Both or neither (8.1.1). lpfg makes of them a slab |back - front| deep
+  // centred on the point looked at, in both projections.
   std::optional<float> front_distance, back_distance;
+  // A cpfg model's view: when set, the Camera frames as cpfg does and the
+  // fields above other than `perspective` and `box` (the model's bounds to
+  // frame when cpfg has no box) are not used.
+  std::optional<CpfgView> cpfg;
 };
+
+// cpfg's screen up (its view_up): world y made square to the line from the
+// view reference point to the viewpoint (world -x instead when that line is
+// along y), then turned by twist/10 degrees about that line, counterclockwise
+// as seen from the viewpoint.
+Vec3 cpfg_view_up(const CpfgView& view);
 
 // A 4x4 matrix, column-major as OpenGL takes it (glLoadMatrixf).
 using Mat4 = std::array<float, 16>;
@@ -66,6 +93,9 @@ class Camera {
   float pixels_per_unit_at(Vec3 world) const;
 
  private:
+  // cpfg's framing of params.cpfg (camera_cpfg.cpp).
+  void frame_cpfg(const ViewParameters& params, const Box& scene_bounds);
+
   int width_, height_;
   bool perspective_ = false;
   Mat4 view_{}, projection_{};

@@ -50,10 +50,18 @@ geometry::Function read_funcedit(WordReader& in, const std::string& default_name
         geometry::Vec2 p;
         p.x = in.number(what + " (x)");
         p.y = in.number(what + " (y)");
+        // A third number on the point's line repeats the point (funcedit's
+        // multiplicity; lpfg and cpfg read it).
+        int multiplicity = 1;
+        if (in.next_is_number() && in.peek().line == x_word.line) {
+          Word m_word = in.peek();
+          multiplicity = in.integer("the multiplicity of " + what);
+          if (multiplicity < 1) in.fail(m_word, "expected a multiplicity of 1 or more, found '" + m_word.text + "'");
+        }
         if (!function.points.empty() && p.x < function.points.back().x)
           in.fail(x_word, "expected x of " + what + " to be at least the previous point's x (" +
                               std::to_string(function.points.back().x) + "), found '" + x_word.text + "'");
-        function.points.push_back(p);
+        function.points.insert(function.points.end(), static_cast<std::size_t>(multiplicity), p);
       }
     } else {
       in.fail(key_word, "expected a function key (name:, samples:, flip:, points:), found '" + key_word.text + "'");

@@ -4,8 +4,8 @@
 #include "io/function_file.h"
 #include "io/input_text.h"
 #include "io/palette_files.h"
-#include "io/surface_file.h"
 #include "io/view_file.h"
+#include "io/view_file_inputs.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
@@ -18,25 +18,6 @@ void replace_earlier(std::optional<std::string>& seen, const std::string& path, 
   if (seen && *seen != path)
     warnings.push_back(path + ": warning: a second " + what + "; it replaces " + *seen + ", as in lpfg and cpfg");
   seen = path;
-}
-
-geometry::BezierSurface load_surface(const ViewFile& view, const SurfaceCommand& command) {
-  geometry::BezierSurface surface;
-  try {
-    surface = read_surface_file(command.path);
-  } catch (const ModelError& e) {
-    // A surface file that is missing is the view file's mistake: say where it is named.
-    if (e.where().line == 0)
-      throw ModelError(SourceLocation{view.path, command.line, command.column}, e.message() + " " + command.path);
-    throw;
-  }
-  // Surface(id, s) scales by s * (view-file scale) / size.
-  surface.size /= command.scale;
-  if (command.s_divisions > 0) {
-    surface.u_divisions = command.s_divisions;
-    surface.v_divisions = command.t_divisions;
-  }
-  return surface;
 }
 
 }  // namespace
@@ -61,7 +42,7 @@ InputKind input_kind_of(const std::string& path) {
   return InputKind::Unknown;
 }
 
-InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler) {
+InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler, ViewDialect dialect) {
   InputFiles inputs;
   std::optional<std::string> view_path, animation_path, colour_path;
   for (const InputFile& file : files) {
@@ -69,7 +50,7 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
     switch (file.kind) {
       case InputKind::View:
         replace_earlier(view_path, path, "view file", inputs.warnings);
-        inputs.view = read_view_file(path, compiler);
+        inputs.view = read_view_file(path, compiler, dialect);
         break;
       case InputKind::Animation:
         replace_earlier(animation_path, path, "animation file", inputs.warnings);
@@ -114,8 +95,8 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
     }
   }
   if (inputs.view) {
-    for (const SurfaceCommand& s : inputs.view->surfaces) inputs.surfaces.push_back(load_surface(*inputs.view, s));
     inputs.warnings.insert(inputs.warnings.end(), inputs.view->warnings.begin(), inputs.view->warnings.end());
+    read_view_file_inputs(inputs);
   }
   if (inputs.animation)
     inputs.warnings.insert(inputs.warnings.end(), inputs.animation->warnings.begin(), inputs.animation->warnings.end());

@@ -58,10 +58,16 @@ struct InputFiles {
   // with its view-file scale folded into `size` and its subdivisions set.
   std::vector<geometry::BezierSurface> surfaces;
   // .con files and .cset sets in command-line order (CurrentContour(id)
-  // counts from 1: contours[id - 1]).
+  // counts from 1: contours[id - 1]); then a cpfg view file's "contour: id
+  // file" commands, each at its id (ids it leaves out are circles).
   std::vector<geometry::Contour> contours;
-  // .func files and .fset sets in command-line order; func(name, x) finds
-  // a function by name.
+  // The curves of cpfg's curve functions (curveX ... curveGAL, ids from 1):
+  // a cpfg view file's "curve:" files. Empty for lpfg, whose curve functions
+  // read `contours`.
+  std::vector<geometry::Contour> curves;
+  // .func files and .fset sets in command-line order, then a cpfg view
+  // file's "function:" and "function set:" files; func(name, x) finds a
+  // function by name (cpfg names only a function set's, as cpfg does).
   std::vector<geometry::Function> functions;
   // .vset parameters in command-line order; val(name) finds one by name.
   std::vector<Parameter> parameters;
@@ -73,11 +79,15 @@ struct InputFiles {
   turtle::TurtleSettings turtle_settings() const;
 };
 
-// Reads every file as its kind says, in the order given. As lpfg does, a
-// second view, animation or colour file replaces the first (with a warning),
-// .e files are left to the environment, and a file of no known kind is read
-// past with a warning. A file that cannot be read, or is not what its kind
-// says, is a ModelError naming the file.
-InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler = "");
+// Reads every file as its kind says, in the order given, the view file in
+// `dialect`. As lpfg does, a second view, animation or colour file replaces
+// the first (with a warning), .e files are left to the environment, and a
+// file of no known kind is read past with a warning. A file that cannot be
+// read, or is not what its kind says, is a ModelError naming the file; but a
+// file the view file names that cannot be read is a warning, as in lpfg and
+// cpfg (a surface is left out, a function is 0 everywhere, cpfg reads no
+// contour from that one on).
+InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler = "",
+                            ViewDialect dialect = ViewDialect::Lpfg);
 
 }  // namespace sylva::io

@@ -1,169 +1,159 @@
 #include "io/view_file.h"
 
-#include <algorithm>
-#include <functional>
-#include <set>
-
 #include "io/input_text.h"
 #include "io/preprocessor.h"
+#include "io/view_parser.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
 
 namespace {
 
-constexpr std::size_t kMaxLights = 8;
-
 std::string warning_at(const std::string& file, const Word& at, const std::string& message) {
   return file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": warning: " + message;
 }
 
-// cpfg view-file commands that lpfg does not use; said as such rather than
-// as unknown.
-const std::set<std::string>& cpfg_commands() {
-  static const std::set<std::string> names = {
-      "ambient light", "background color", "light direction", "diffuse reflection",
-      "cue range", "shade mode", "surface ambient", "surface diffuse", "tapered lines", "twist of cylinders",
-      "viewpoint", "view reference point", "viewing angle", "twist", "interpretation step", "background scene",
-      "tropism direction", "initial elasticity", "elasticity increment", "function", "function set", "contour",
-      "tsurface"};
-  return names;
+}  // namespace
+
+Parser::Parser(ViewFile& view) : view_(view) {
+  if (!cpfg()) return;
+  // cpfg's defaults where they differ from lpfg's (cpfg's InitializeParameters).
+  view_.default_view.cpfg = geometry::CpfgView{};
+  view_.render.z_buffer = true;
+  view_.render.ps_linecap = 1;
+  view_.contour_sides = 8;
+  view_.default_light_direction = {1, 0, 0};
 }
 
-class Parser {
- public:
-  explicit Parser(ViewFile& view) : view_(view) {}
-
-  void command(const Command& c, const std::string& file);
-  void finish();
-
- private:
-  using Handler = void (Parser::*)(WordReader&);
-  static const std::map<std::string, Handler>& handlers();
-
-  float positive(WordReader& in, std::string_view what);
-  bool flag(WordReader& in);
-  int choice(WordReader& in, std::string_view what, std::initializer_list<const char*> names);
-  geometry::Vec3 direction(WordReader& in, std::string_view what);
-  geometry::Rgb color(WordReader& in, std::string_view what);
-  int view_id(WordReader& in);
-  geometry::ViewParameters& view_for(int id);
-  void set_all_views(const std::function<void(geometry::ViewParameters&)>& set);
-
-  void projection(WordReader& in);
-  void scale(WordReader& in);
-  void min_zoom(WordReader& in) { view_.min_zoom = positive(in, "the minimum zoom"); }
-  void max_zoom(WordReader& in) { view_.max_zoom = positive(in, "the maximum zoom"); }
-  void generate_on_view_change(WordReader& in);
-  void view(WordReader& in);
-  void box(WordReader& in);
-  void window(WordReader& in);
-  void window_border(WordReader& in);
-  void front_distance(WordReader& in) { front_ = in.number("the front distance"); }
-  void back_distance(WordReader& in) { back_ = in.number("the back distance"); }
-  void z_buffer(WordReader& in) { view_.render.z_buffer = flag(in); }
-  void render_mode(WordReader& in);
-  void shadow_map(WordReader& in);
-  void light(WordReader& in);
-  void stationary_lights(WordReader& in) { view_.render.stationary_lights = flag(in); }
-  void concave_polygons(WordReader& in) { view_.render.concave_polygons = flag(in); }
-  void auto_normals(WordReader& in) { view_.render.auto_normals = flag(in); }
-  void antialiasing(WordReader& in);
-  void line_style(WordReader& in);
-  void wireframe_line_width(WordReader& in) { view_.render.wireframe_line_width = positive(in, "the line width"); }
-  void contour_sides(WordReader& in);
-  void capped_cylinders(WordReader& in) { view_.render.capped_cylinders = flag(in); }
-  void backface_culling(WordReader& in) { view_.render.backface_culling = flag(in); }
-  void corrected_rotation(WordReader& in) { view_.corrected_rotation = flag(in); }
-  void tropism(WordReader& in) { view_.tropisms.push_back(tropism_parts(in, false)); }
-  void torque(WordReader& in) { view_.tropisms.push_back(tropism_parts(in, true)); }
-  TropismCommand tropism_parts(WordReader& in, bool torque);
-  void stropism(WordReader& in);
-  void surface(WordReader& in);
-  void mesh(WordReader& in);
-  void texture(WordReader& in);
-  void font(WordReader& in) { view_.font = in.rest_of_line("an X font name"); }
-  void winfont(WordReader& in);
-  void ps_linecap(WordReader& in);
-  void gradient(WordReader& in);
-  void initial_color(WordReader& in);
-  void initial_line_width(WordReader& in);
-  void angle_increment(WordReader& in) { view_.angle_increment = in.number("the angle increment"); }
-  void angle_factor(WordReader& in);
-  void color_increment(WordReader& in);
-  void line_width_increment(WordReader& in) { view_.line_width_increment = in.number("the line width increment"); }
-  void initial_scale(WordReader& in) { view_.initial_scale = positive(in, "the initial scale"); }
-  void scale_multiplier(WordReader& in) { view_.scale_multiplier = positive(in, "the scale multiplier"); }
-
-  ViewFile& view_;
-  std::string file_;  // of the command being read
-  std::optional<float> front_, back_;
-};
-
-const std::map<std::string, Parser::Handler>& Parser::handlers() {
-  static const std::map<std::string, Handler> table = {
-      {"projection", &Parser::projection},
-      {"scale", &Parser::scale},
-      {"scale factor", &Parser::scale},
-      {"min zoom", &Parser::min_zoom},
-      {"max zoom", &Parser::max_zoom},
-      {"generate on view change", &Parser::generate_on_view_change},
-      {"view", &Parser::view},
-      {"box", &Parser::box},
-      {"window", &Parser::window},
-      {"window border", &Parser::window_border},
-      {"front distance", &Parser::front_distance},
-      {"back distance", &Parser::back_distance},
-      {"z buffer", &Parser::z_buffer},
-      {"render mode", &Parser::render_mode},
-      {"shadow map", &Parser::shadow_map},
-      {"light", &Parser::light},
-      {"stationary lights", &Parser::stationary_lights},
-      {"concave polygons", &Parser::concave_polygons},
-      {"auto normals", &Parser::auto_normals},
-      {"antialiasing", &Parser::antialiasing},
-      {"line style", &Parser::line_style},
-      {"wireframe line width", &Parser::wireframe_line_width},
-      {"contour sides", &Parser::contour_sides},
-      {"capped cylinders", &Parser::capped_cylinders},
-      {"backface culling", &Parser::backface_culling},
-      {"corrected rotation", &Parser::corrected_rotation},
-      {"tropism", &Parser::tropism},
-      {"torque", &Parser::torque},
-      {"stropism", &Parser::stropism},
-      {"surface", &Parser::surface},
-      {"mesh", &Parser::mesh},
-      {"texture", &Parser::texture},
-      {"font", &Parser::font},
-      {"winfont", &Parser::winfont},
-      {"ps linecap", &Parser::ps_linecap},
-      {"gradient", &Parser::gradient},
-      {"initial color", &Parser::initial_color},
-      {"initial line width", &Parser::initial_line_width},
-      {"angle increment", &Parser::angle_increment},
-      {"angle factor", &Parser::angle_factor},
-      {"color increment", &Parser::color_increment},
-      {"line width increment", &Parser::line_width_increment},
-      {"width increment", &Parser::line_width_increment},
-      {"initial scale", &Parser::initial_scale},
-      {"scale multiplier", &Parser::scale_multiplier},
+// Which commands each program reads (lpfg's DrawParams::Load, cpfg's
+// ReadViewData). A program's command Sylva cannot reproduce says why.
+const std::map<std::string, Parser::Entry>& Parser::commands() {
+  using P = Parser;
+  static const char* colormap_lighting = "cpfg's colormap-mode shading is not reproduced";
+  static const std::map<std::string, Entry> table = {
+      // The camera.
+      {"projection", {{&P::projection}, {&P::projection}}},
+      {"scale", {{&P::scale}, {}}},
+      {"scale factor", {{&P::scale}, {&P::cpfg_scale_factor}}},
+      {"min zoom", {{&P::min_zoom}, {&P::min_zoom}}},
+      {"max zoom", {{&P::max_zoom}, {&P::max_zoom}}},
+      {"generate on view change", {{&P::generate_on_view_change}, {&P::generate_on_view_change}}},
+      {"view", {{&P::view}, {}}},
+      {"box", {{&P::box}, {&P::cpfg_box}}},
+      {"window", {{&P::window}, {}}},
+      {"window border", {{&P::window_border}, {}}},
+      {"front distance", {{&P::front_distance}, {&P::front_distance}}},
+      {"back distance", {{&P::back_distance}, {&P::back_distance}}},
+      {"viewpoint", {{}, {&P::viewpoint}}},
+      {"view reference point", {{}, {&P::view_reference_point}}},
+      {"twist", {{}, {&P::twist}}},
+      {"viewing angle", {{}, {&P::viewing_angle}}},
+      {"rotation", {{nullptr, "lpfg reads nothing from it"}, {}}},
+      // Rendering and lights.
+      {"z buffer", {{&P::z_buffer}, {&P::z_buffer}}},
+      {"render mode", {{&P::render_mode}, {&P::render_mode}}},
+      {"shade mode", {{}, {&P::shade_mode}}},
+      {"shadow map", {{&P::shadow_map}, {&P::shadow_map}}},
+      {"light", {{&P::light}, {&P::light}}},
+      {"light direction", {{}, {&P::light_direction}}},
+      {"diffuse reflection", {{}, {nullptr, colormap_lighting}}},
+      {"surface ambient", {{}, {nullptr, colormap_lighting}}},
+      {"surface diffuse", {{}, {nullptr, colormap_lighting}}},
+      {"ambient light", {{}, {nullptr, "cpfg itself does not use it"}}},
+      {"background color", {{}, {nullptr, "cpfg itself does not use it"}}},
+      {"cue range", {{}, {&P::cue_range}}},
+      {"stationary lights", {{&P::stationary_lights}, {}}},
+      {"concave polygons", {{&P::concave_polygons}, {&P::concave_polygons}}},
+      {"auto normals", {{&P::auto_normals}, {}}},
+      {"antialiasing", {{&P::antialiasing}, {&P::antialiasing}}},
+      {"line style", {{&P::line_style}, {&P::line_style}}},
+      {"wireframe line width", {{&P::wireframe_line_width}, {}}},
+      {"capped cylinders", {{&P::capped_cylinders}, {}}},
+      {"backface culling", {{&P::backface_culling}, {}}},
+      {"tapered lines", {{}, {&P::tapered_lines}}},
+      {"tapered cylinders", {{nullptr, "tapered cylinders are not reproduced"}, {}}},
+      {"font", {{&P::font}, {&P::font}}},
+      {"winfont", {{&P::winfont}, {&P::winfont}}},
+      {"ps linecap", {{&P::ps_linecap}, {&P::ps_linecap}}},
+      {"gradient", {{&P::gradient}, {}}},
+      {"interpretation step", {{}, {nullptr, "it only paces cpfg's drawing on screen"}}},
+      {"interpretation past %", {{}, {nullptr, "interpretation always goes past %"}}},
+      {"environment display", {{}, {nullptr, "it only orders cpfg's drawing on screen"}}},
+      {"rayshade objects", {{}, {nullptr, "rayshade output is not supported"}}},
+      {"rayshade scale", {{}, {nullptr, "rayshade output is not supported"}}},
+      {"background scene", {{}, {nullptr, "background scenes are not drawn yet"}}},
+      // The turtle.
+      {"contour sides", {{&P::contour_sides}, {&P::contour_sides}}},
+      {"polygonization level", {{}, {&P::polygonization_level}}},
+      {"corrected rotation", {{&P::corrected_rotation}, {}}},
+      {"tropism", {{&P::tropism}, {&P::tropism}}},
+      {"torque", {{&P::torque}, {&P::torque}}},
+      {"stropism", {{&P::stropism}, {}}},
+      {"tropism direction", {{}, {&P::tropism_direction}}},
+      {"initial elasticity", {{}, {&P::initial_elasticity}}},
+      {"elasticity increment", {{}, {&P::elasticity_increment}}},
+      {"initial color", {{}, {&P::initial_color}}},
+      {"initial line width", {{}, {&P::initial_line_width}}},
+      {"angle increment", {{}, {&P::angle_increment}}},
+      {"angle factor", {{}, {&P::angle_factor}}},
+      {"color increment", {{}, {&P::color_increment}}},
+      {"line width increment", {{}, {&P::line_width_increment}}},
+      {"initial scale", {{}, {&P::initial_scale}}},
+      {"scale multiplier", {{}, {&P::scale_multiplier}}},
+      {"twist of cylinders", {{}, {&P::twist_of_cylinders}}},
+      // External files.
+      {"surface", {{&P::surface}, {&P::surface}}},
+      {"mesh", {{&P::mesh}, {}}},
+      {"texture", {{&P::texture}, {&P::texture}}},
+      {"contour", {{}, {&P::contour}}},
+      {"function", {{nullptr, "lpfg takes functions from the command line"}, {&P::function}}},
+      {"function set", {{}, {&P::function_set}}},
+      {"gallery", {{nullptr, "lpfg takes function sets from the command line"}, {}}},
+      {"curve", {{}, {&P::curve}}},
+      {"line", {{}, {nullptr, "lines drawn as surfaces are not supported"}}},
+      {"tsurface", {{}, {nullptr, "rayshade triangle surfaces are not supported"}}},
+      {"blob", {{}, {nullptr, "blobby environment fields are not supported"}}},
+      {"terrain", {{nullptr, "terrains are not supported"}, {}}},
+      {"bsurface", {{nullptr, "B-spline surfaces are not supported"}, {}}},
+      {"animated mesh", {{nullptr, "lpfg itself does not read it"}, {}}},
   };
   return table;
 }
 
+void Parser::warn(const Word& at, const std::string& message) { view_.warnings.push_back(warning_at(file_, at, message)); }
+
 void Parser::command(const Command& c, const std::string& file) {
   file_ = file;
-  auto it = handlers().find(c.name);
-  if (it == handlers().end()) {
-    std::string what = cpfg_commands().count(c.name) ? "cpfg command '" + c.name_word.text + "' ignored: lpfg does not use it"
-                                                     : "unknown command '" + c.name_word.text + "' ignored";
-    view_.warnings.push_back(warning_at(file, c.name_word, what));
+  command_ = c.name_word.text;
+  auto it = commands().find(c.name);
+  if (it == commands().end()) {
+    warn(c.name_word, "unknown command '" + command_ + "' ignored");
     return;
   }
+  const Reading& reading = cpfg() ? it->second.cpfg : it->second.lpfg;
+  if (!reading.handler) {
+    if (reading.ignored) warn(c.name_word, "'" + command_ + ":' ignored: " + reading.ignored);
+    else warn(c.name_word, std::string(cpfg() ? "lpfg" : "cpfg") + " command '" + command_ + "' ignored: " + program() +
+                               " does not read it");
+    return;
+  }
+  // lpfg and cpfg print a message about a value they cannot read and go on;
+  // so does Sylva, leaving the command without effect.
+  ViewFile before = view_;
+  const std::optional<float> front = front_, back = back_;
   WordReader in(file, c.arguments, c.end);
-  (this->*(it->second))(in);
-  if (!in.at_end())
-    view_.warnings.push_back(warning_at(file, in.peek(), "'" + in.peek().text + "' after '" + c.name_word.text + ":' ignored"));
+  try {
+    (this->*(reading.handler))(in);
+  } catch (const ModelError& e) {
+    std::vector<std::string> warnings = std::move(view_.warnings);
+    view_ = std::move(before);
+    view_.warnings = std::move(warnings);
+    front_ = front, back_ = back;
+    Word at{"", e.where().line, e.where().column};
+    warn(at, e.message() + "; '" + command_ + ":' ignored");
+    return;
+  }
+  if (!in.at_end()) warn(in.peek(), "'" + in.peek().text + "' after '" + command_ + ":' ignored");
 }
 
 float Parser::positive(WordReader& in, std::string_view what) {
@@ -179,6 +169,8 @@ bool Parser::flag(WordReader& in) {
   if (!value) in.fail(at, "expected on or off, found '" + at.text + "'");
   return *value;
 }
+
+bool Parser::cpfg_flag(WordReader& in) { return in.next("on or off").text.starts_with("on"); }
 
 int Parser::choice(WordReader& in, std::string_view what, std::initializer_list<const char*> names) {
   std::string list;
@@ -204,372 +196,61 @@ geometry::Rgb Parser::color(WordReader& in, std::string_view what) {
   return {v.x, v.y, v.z};
 }
 
-// A number, or the name of a window: command (windows count from 1, as
-// the model's view names do: view 0 is no window, LPFG manual 5.12).
-int Parser::view_id(WordReader& in) {
-  Word at = in.next("a view id");
-  if (std::optional<int> id = parse_int(at.text)) {
-    if (*id < 0) in.fail(at, "expected a view id of 0 or more, found '" + at.text + "'");
-    return *id;
-  }
-  for (std::size_t i = 0; i < view_.windows.size(); ++i)
-    if (view_.windows[i].name == at.text) return static_cast<int>(i) + 1;
-  in.fail(at, "expected a view id (a number, or a name given by an earlier window: command), found '" + at.text + "'");
-}
-
 geometry::ViewParameters& Parser::view_for(int id) {
   auto it = view_.views.find(id);
   if (it == view_.views.end()) it = view_.views.emplace(id, view_.default_view).first;
   return it->second;
 }
 
-// A global command holds for every view, those given so far included: the
-// last command that sets a parameter wins.
 void Parser::set_all_views(const std::function<void(geometry::ViewParameters&)>& set) {
   set(view_.default_view);
-  for (auto& [id, params] : view_.views) set(params);
-}
-
-void Parser::projection(WordReader& in) {
-  bool perspective = choice(in, "a projection", {"parallel", "perspective"}) == 1;
-  set_all_views([&](geometry::ViewParameters& v) { v.perspective = perspective; });
-}
-
-void Parser::scale(WordReader& in) {
-  float s = positive(in, "the scale");
-  set_all_views([&](geometry::ViewParameters& v) { v.scale = s; });
-}
-
-void Parser::generate_on_view_change(WordReader& in) {
-  static constexpr GenerateOnViewChange kinds[] = {GenerateOnViewChange::On, GenerateOnViewChange::Triggered,
-                                                   GenerateOnViewChange::Off};
-  view_.generate_on_view_change = kinds[choice(in, "when to generate", {"on", "triggered", "off"})];
-}
-
-void Parser::view(WordReader& in) {
-  int id = view_id(in);
-  geometry::ViewParameters& v = view_for(id);
-  if (in.next_is_number()) {  // the deprecated "view: id px py pz scale ux uy uz"
-    v.pan = in.vec3("the pan point");
-    v.scale = positive(in, "the scale");
-    v.up = direction(in, "the up direction");
-    return;
-  }
-  while (!in.at_end()) {
-    Word key = in.next("a view part");
-    std::string k = to_lower(key.text);
-    if (k == "dir:") {
-      v.dir = direction(in, "the view direction");
-    } else if (k == "up:") {
-      v.up = direction(in, "the up direction");
-    } else if (k == "pan:") {
-      v.pan = in.vec3("the pan point");
-    } else if (k == "fov:") {
-      Word at = in.peek();
-      v.fov = in.number("the field of view");
-      if (v.fov <= 0 || v.fov >= 180) in.fail(at, "expected a field of view between 0 and 180 degrees, found '" + at.text + "'");
-    } else if (k == "shift:") {
-      v.shift = in.number("the shift");
-    } else if (k == "scale:") {
-      v.scale = positive(in, "the scale");
-    } else {
-      in.fail(key, "expected dir:, up:, pan:, fov:, shift: or scale:, found '" + key.text + "'");
-    }
-  }
-}
-
-void Parser::box(WordReader& in) {
-  int id = view_id(in);
-  float bounds[6];
-  static const char* names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
-  Word first = in.peek();
-  for (int i = 0; i < 6; ++i) bounds[i] = in.number(names[i]);
-  if (bounds[0] > bounds[1] || bounds[2] > bounds[3] || bounds[4] > bounds[5])
-    in.fail(first, "expected xmin xmax ymin ymax zmin zmax with each minimum at most its maximum");
-  geometry::Box b;
-  b.add({bounds[0], bounds[2], bounds[4]});
-  b.add({bounds[1], bounds[3], bounds[5]});
-  view_for(id).box = b;
-}
-
-void Parser::window(WordReader& in) {
-  ViewWindow w;
-  w.name = in.next("a view name").text;
-  w.left = in.number("the left edge");
-  w.top = in.number("the top edge");
-  w.width = positive(in, "the width");
-  w.height = positive(in, "the height");
-  view_.windows.push_back(w);
-}
-
-void Parser::window_border(WordReader& in) {
-  Word at = in.peek();
-  view_.window_border_width = in.integer("the border size");
-  if (view_.window_border_width < 0) in.fail(at, "expected a border size of 0 or more, found '" + at.text + "'");
-  float rgb[3];
-  for (float& c : rgb) {
-    Word cw = in.peek();
-    int v = in.integer("a colour component (0 to 255)");
-    if (v < 0 || v > 255) in.fail(cw, "expected a colour component from 0 to 255, found '" + cw.text + "'");
-    c = static_cast<float>(v) / 255.0f;
-  }
-  view_.window_border_color = {rgb[0], rgb[1], rgb[2]};
-}
-
-void Parser::render_mode(WordReader& in) {
-  static constexpr RenderMode modes[] = {RenderMode::Filled, RenderMode::Wireframe, RenderMode::Shaded,
-                                         RenderMode::Shadows};
-  view_.render.mode = modes[choice(in, "a render mode", {"filled", "wireframe", "shaded", "shadows"})];
-}
-
-void Parser::shadow_map(WordReader& in) {
-  ShadowMap& s = view_.render.shadow_map;
-  while (!in.at_end()) {
-    Word key = in.next("a shadow map part");
-    std::string k = to_lower(key.text);
-    if (k == "size:") {
-      Word at = in.peek();
-      s.size = in.integer("the shadow map size");
-      if (s.size <= 0 || s.size % 2 != 0) in.fail(at, "expected an even positive shadow map size, found '" + at.text + "'");
-    } else if (k == "color:") {
-      s.color = color(in, "the shadow colour");
-    } else if (k == "offset:") {
-      s.offset_factor = in.number("the offset factor");
-      s.offset_units = in.number("the offset units");
-    } else {
-      in.fail(key, "expected size:, color: or offset:, found '" + key.text + "'");
-    }
-  }
-}
-
-void Parser::light(WordReader& in) {
-  Light l;
-  Word first = in.peek();
-  bool directional = false, origin = false, spot = false;
-  while (!in.at_end()) {
-    Word key = in.next("a light part");
-    std::string k = to_lower(key.text);
-    if (k == "v:") {
-      l.direction = direction(in, "the light direction");
-      directional = true;
-    } else if (k == "o:") {
-      l.position = in.vec3("the light's origin");
-      origin = true;
-    } else if (k == "p:") {
-      l.direction = direction(in, "the spotlight direction");
-      l.spot_exponent = in.number("the spotlight exponent");
-      Word at = in.peek();
-      l.spot_cutoff = in.number("the spotlight cutoff angle");
-      if (l.spot_cutoff < 0 || (l.spot_cutoff > 90 && l.spot_cutoff != 180))
-        in.fail(at, "expected a cutoff angle from 0 to 90 degrees, or 180, found '" + at.text + "'");
-      spot = true;
-    } else if (k == "a:") {
-      l.ambient = color(in, "the ambient colour");
-    } else if (k == "d:") {
-      l.diffuse = color(in, "the diffuse colour");
-    } else if (k == "s:") {
-      l.specular = color(in, "the specular colour");
-    } else if (k == "t:") {
-      l.constant_attenuation = in.number("the constant attenuation");
-      l.linear_attenuation = in.number("the linear attenuation");
-      l.quadratic_attenuation = in.number("the quadratic attenuation");
-    } else {
-      in.fail(key, "expected V:, O:, P:, A:, D:, S: or T:, found '" + key.text + "'");
-    }
-  }
-  if (directional && (origin || spot))
-    in.fail(first, "expected either a directional light (V:) or a point light or spotlight (O:, P:), not both");
-  l.kind = spot ? Light::Kind::Spot : origin ? Light::Kind::Point : Light::Kind::Directional;
-  if (view_.lights.size() >= kMaxLights) {
-    view_.warnings.push_back(warning_at(file_, first, "more than 8 lights: this one is ignored"));
-    return;
-  }
-  view_.lights.push_back(l);
-}
-
-void Parser::antialiasing(WordReader& in) {
-  Word at = in.peek();
-  view_.render.antialiasing = in.integer("the number of samples");
-  if (view_.render.antialiasing < 0 || view_.render.antialiasing > 10)
-    in.fail(at, "expected a number of samples from 0 to 10, found '" + at.text + "'");
-}
-
-void Parser::line_style(WordReader& in) {
-  static constexpr geometry::LineStyle styles[] = {geometry::LineStyle::Pixel, geometry::LineStyle::Polygon,
-                                                   geometry::LineStyle::Cylinder};
-  view_.render.line_style = styles[choice(in, "a line style", {"pixel", "polygon", "cylinder"})];
-}
-
-void Parser::contour_sides(WordReader& in) {
-  int n = in.integer("the number of sides");
-  view_.contour_sides = std::max(n, 3);  // as lpfg clamps it
-}
-
-TropismCommand Parser::tropism_parts(WordReader& in, bool torque) {
-  TropismCommand t;
-  t.torque = torque;
-  Word first = in.peek();
-  bool have_vector = false;
-  while (!in.at_end()) {
-    Word key = in.next("a tropism part");
-    std::string k = to_lower(key.text);
-    if (k == "t:") {
-      t.direction = direction(in, "the tropism vector");
-      have_vector = true;
-    } else if (k == "a:") {
-      t.angle = in.number("the tropism angle");
-    } else if (k == "i:") {
-      t.intensity = in.number("the intensity");
-    } else if (k == "e:") {
-      t.elasticity = in.number("the elasticity");
-    } else if (k == "s:") {
-      t.step = in.number("the elasticity step");
-    } else {
-      in.fail(key, std::string("expected T:, ") + (torque ? "" : "A:, ") + "I:, E: or S:, found '" + key.text + "'");
-    }
-  }
-  if (!have_vector) in.fail(first, "expected the tropism vector T: x y z");
-  return t;
-}
-
-void Parser::stropism(WordReader& in) {
-  TropismCommand t;
-  t.direction = direction(in, "the tropism vector");
-  t.elasticity = in.number("the elasticity");
-  view_.simple_tropism = t;
-}
-
-void Parser::surface(WordReader& in) {
-  SurfaceCommand s;
-  Word at = in.next("a surface file name");
-  // cpfg's form (CPFG manual 8.1.5) starts with the id the ~id module uses:
-  // "surface: id file.s scale [i j] [texfile]"; lpfg's with the file.
-  const bool cpfg = !in.at_end() && !in.next_is_number();
-  if (cpfg) {
-    s.id = at.text;
-    for (const SurfaceCommand& other : view_.surfaces)
-      if (other.id == s.id) in.fail(at, "a second surface with id '" + s.id + "'");
-    at = in.next("a surface file name");
-  }
-  s.line = at.line;
-  s.column = at.column;
-  s.file = at.text;
-  s.path = resolve_beside(view_.path, at.text);
-  if (!in.at_end()) s.scale = positive(in, "the surface scale");
-  if (!in.at_end() && (!cpfg || in.next_is_number())) {
-    Word sw = in.peek();
-    s.s_divisions = in.integer("the subdivisions along s");
-    s.t_divisions = in.integer("the subdivisions along t (sdiv and tdiv go together)");
-    if (s.s_divisions < 1 || s.t_divisions < 1) in.fail(sw, "expected positive numbers of subdivisions");
-  }
-  if (cpfg && !in.at_end()) {
-    Word tw = in.next("a texture file");
-    view_.warnings.push_back(warning_at(file_, tw, "texture file '" + tw.text + "' of a surface is not supported yet; ignored"));
-  } else if (!in.at_end()) {
-    Word tw = in.peek();
-    s.texture = in.integer("the texture id");
-    if (s.texture < 0) in.fail(tw, "expected a texture id of 0 or more, found '" + tw.text + "'");
-  }
-  view_.surfaces.push_back(s);
-}
-
-void Parser::mesh(WordReader& in) {
-  MeshCommand m;
-  m.file = in.next("a mesh file name").text;
-  m.path = resolve_beside(view_.path, m.file);
-  while (!in.at_end()) {
-    Word key = in.next("a mesh part");
-    std::string k = to_lower(key.text);
-    if (k == "s:") {
-      m.scale = positive(in, "the mesh scale");
-    } else if (k == "c:") {
-      m.contact = in.vec3("the contact point");
-    } else {
-      in.fail(key, "expected S: or C:, found '" + key.text + "'");
-    }
-  }
-  view_.meshes.push_back(m);
+  for (auto& [id, v] : view_.views) set(v);
 }
 
 void Parser::texture(WordReader& in) { view_.textures.push_back(resolve_beside(view_.path, in.next("an image file name").text)); }
 
-void Parser::winfont(WordReader& in) {
-  view_.winfont.name = in.next("a font name").text;
-  Word at = in.peek();
-  view_.winfont.size = in.integer("the font size");
-  if (view_.winfont.size <= 0) in.fail(at, "expected a positive font size, found '" + at.text + "'");
-  view_.winfont.bold = view_.winfont.italic = false;
-  while (!in.at_end()) {
-    Word f = in.next("b or i");
-    for (char c : to_lower(f.text)) {
-      if (c == 'b') view_.winfont.bold = true;
-      else if (c == 'i') view_.winfont.italic = true;
-      else in.fail(f, "expected the flags b (bold) and i (italic), found '" + f.text + "'");
+void Parser::finish() {
+  if (!cpfg()) {
+    // lpfg: both distances must be given to have an effect (LPFG manual 8.1.1).
+    if (front_ && back_)
+      set_all_views([&](geometry::ViewParameters& v) {
+        v.front_distance = front_;
+        v.back_distance = back_;
+      });
+    return;
+  }
+  // cpfg's checks once the file is read (the end of ReadViewData).
+  geometry::CpfgView& v = cpfg_view();
+  auto warn_file = [&](const std::string& message) { view_.warnings.push_back(view_.path + ": warning: " + message); };
+  if (v.viewpoint == v.reference_point) {
+    warn_file("the viewpoint and the view reference point are the same; cpfg's default view is used");
+    v.viewpoint = {0, 0, -1};
+    v.reference_point = {0, 0, 0};
+  }
+  if (view_.default_view.perspective) {
+    if (v.front_distance < 0) {
+      warn_file("the front distance cannot be negative in perspective; 0.1 is used, as in cpfg");
+      v.front_distance = 0.1f;
+    }
+    if (v.front_distance > v.back_distance) {
+      warn_file("the front distance is beyond the back distance; 1 and 100 are used, as in cpfg");
+      v.front_distance = 1;
+      v.back_distance = 100;
     }
   }
 }
-
-void Parser::ps_linecap(WordReader& in) {
-  Word at = in.peek();
-  view_.render.ps_linecap = in.integer("the line cap type");
-  if (view_.render.ps_linecap < 0 || view_.render.ps_linecap > 2)
-    in.fail(at, "expected a line cap type of 0, 1 or 2, found '" + at.text + "'");
-}
-
-void Parser::gradient(WordReader& in) {
-  Word at = in.peek();
-  view_.render.gradient_direction = in.integer("the gradient direction");
-  if (view_.render.gradient_direction < 0 || view_.render.gradient_direction > 2)
-    in.fail(at, "expected a gradient direction of 0, 1 or 2, found '" + at.text + "'");
-  view_.render.gradient_magnitude = in.number("the gradient magnitude");
-}
-
-void Parser::initial_color(WordReader& in) {
-  Word at = in.peek();
-  int color = in.integer("the initial colour index");
-  if (color < 0 || color > 255) in.fail(at, "expected a colour index from 0 to 255, found '" + at.text + "'");
-  view_.initial_color = color;
-  if (!in.at_end()) view_.initial_back_color = in.integer("the back side's colour index");
-}
-
-void Parser::initial_line_width(WordReader& in) {
-  view_.initial_line_width = in.number("the initial line width");
-  if (in.at_end()) return;
-  // cpfg's optional style: p(ixels) are lines, s(haded) are cylinders.
-  Word style = in.next("a line style");
-  std::string s = to_lower(style.text);
-  if (s == "p" || s == "pixels") view_.render.line_style = geometry::LineStyle::Pixel;
-  else if (s == "s" || s == "shaded") view_.render.line_style = geometry::LineStyle::Cylinder;
-  else in.fail(style, "expected the line style p (pixels) or s (shaded), found '" + style.text + "'");
-}
-
-void Parser::angle_factor(WordReader& in) {
-  // The same setting as angle increment, as a fraction of a full turn.
-  view_.angle_increment = 360 / positive(in, "the angle factor");
-}
-
-void Parser::color_increment(WordReader& in) {
-  view_.color_increment = in.integer("the colour increment");
-  if (!in.at_end()) view_.back_color_increment = in.integer("the back side's colour increment");
-}
-
-void Parser::finish() {
-  // The manual: both distances must be given to have an effect.
-  if (front_ && back_)
-    set_all_views([&](geometry::ViewParameters& v) {
-      v.front_distance = front_;
-      v.back_distance = back_;
-    });
-}
-
-}  // namespace
 
 const geometry::ViewParameters& ViewFile::view(int id) const {
   auto it = views.find(id);
   return it == views.end() ? default_view : it->second;
 }
 
-std::vector<Light> ViewFile::lights_or_default() const { return lights.empty() ? std::vector<Light>{Light{}} : lights; }
+std::vector<Light> ViewFile::lights_or_default() const {
+  if (!lights.empty()) return lights;
+  Light light;
+  light.direction = default_light_direction;
+  return {light};
+}
 
 turtle::TurtleSettings ViewFile::turtle_settings() const {
   turtle::TurtleSettings settings;
@@ -596,10 +277,11 @@ geometry::TessellationOptions ViewFile::tessellation_options() const {
   return geometry::TessellationOptions{render.line_style, contour_sides};
 }
 
-ViewFile read_view_file(const std::string& path, const std::string& compiler) {
+ViewFile read_view_file(const std::string& path, const std::string& compiler, ViewDialect dialect) {
   read_input_file(path, "view file");  // a missing file named as such, not as the preprocessor says it
   ViewFile view;
   view.path = path;
+  view.dialect = dialect;
   Parser parser(view);
   OriginalColumns columns;
   for (const PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_preprocessor() : compiler)) {

@@ -1,6 +1,9 @@
-// The view file (.v, LPFG manual 8.1): camera, rendering, geometry
-// presentation, tropisms and the external files (surfaces, meshes,
-// textures). It goes through the C preprocessor first, as in lpfg.
+// The view file (.v, LPFG manual 8.1, CPFG manual 8.1): camera, rendering,
+// geometry presentation, tropisms and the external files (surfaces, meshes,
+// textures; cpfg's contours, functions and curves). It goes through the C
+// preprocessor first, as in lpfg and cpfg. lpfg and cpfg read different
+// commands, and some alike commands differently, so the file is read in the
+// dialect of the program the model is written for (docs/reference-dialects.md).
 #pragma once
 
 #include <map>
@@ -16,6 +19,10 @@
 
 namespace sylva::io {
 
+// Which program's reading of the view file: lpfg's (L+C models) or cpfg's.
+enum class ViewDialect { Lpfg, Cpfg };
+
+// cpfg's flat mode is drawn Shaded, its interpolated and fast modes Filled.
 enum class RenderMode { Filled, Wireframe, Shaded, Shadows };
 enum class GenerateOnViewChange { Off, On, Triggered };
 
@@ -85,6 +92,30 @@ struct MeshCommand {
   geometry::Vec3 contact{0, 0, 0};
 };
 
+// cpfg's "contour: id file" (CPFG manual 8.1.5): the contour drawn as `id`.
+struct ContourCommand {
+  int id = 1;
+  std::string file, path;  // as written; relative to the view file's folder
+  int line = 0, column = 0;  // of the file name, for messages
+};
+
+// cpfg's "function: file [samples]" and "function set: file" (CPFG manual
+// 8.1.6), and "curve: file [samples]" (the curves of curveX ... curveGAL).
+struct FunctionCommand {
+  std::string file, path;
+  int samples = 0;  // 0: none given
+  bool set = false;  // a function set (.fset): it replaces the functions before it
+  int line = 0, column = 0;
+};
+
+// cpfg's deprecated tropism (CPFG manual 8.1.10): the direction every F
+// bends toward by the turtle's elasticity, and the step of the _ module.
+struct CpfgOldTropism {
+  geometry::Vec3 direction{0, 1, 0};
+  float initial_elasticity = 0;
+  float elasticity_increment = 0;
+};
+
 struct WinFont {
   std::string name = "Arial";
   int size = 12;
@@ -93,6 +124,7 @@ struct WinFont {
 
 struct ViewFile {
   std::string path;
+  ViewDialect dialect = ViewDialect::Lpfg;
 
   // The camera of each view id (0 in single-view mode). A view without its
   // own view: or box: command gets default_view, which holds the global
@@ -109,6 +141,9 @@ struct ViewFile {
 
   RenderSettings render;
   std::vector<Light> lights;  // empty: the default light
+  // The default light is directional: lpfg's along +z, cpfg's along its
+  // "light direction:" (1,0,0 by default).
+  geometry::Vec3 default_light_direction{0, 0, 1};
   std::vector<Light> lights_or_default() const;
 
   int contour_sides = 16;
@@ -119,12 +154,16 @@ struct ViewFile {
   std::vector<SurfaceCommand> surfaces;
   std::vector<MeshCommand> meshes;
   std::vector<std::string> textures;  // paths relative to the view file's folder; ids from 0
+  // cpfg's contours, functions and curves, in the file's order; read by
+  // read_input_files (io/view_file_inputs.h).
+  std::vector<ContourCommand> contour_files;
+  std::vector<FunctionCommand> function_files;
+  std::vector<FunctionCommand> curve_files;
 
   std::string font = "-*-courier-bold-r-*-*-12-*-*-*-*-*-*-*";
   WinFont winfont;
 
-  // cpfg's "initial color:" and "initial line width:", which cpfg view files
-  // carry into lpfg models.
+  // cpfg's "initial color:" and "initial line width:" (lpfg reads neither).
   std::optional<int> initial_color;
   // Their second values, the back side's (cpfg's @; and @,).
   std::optional<int> initial_back_color, back_color_increment;
@@ -137,9 +176,10 @@ struct ViewFile {
   int color_increment = 1;
   float initial_scale = 1;
   float scale_multiplier = 1;
+  CpfgOldTropism old_tropism;
 
-  // "file:line:column: warning: ..." for commands lpfg does not know, and
-  // values it would ignore.
+  // "file:line:column: warning: ..." for commands the program does not
+  // read, values it cannot read, and effects Sylva does not reproduce.
   std::vector<std::string> warnings;
 
   // What the turtle takes from the view file; the caller fills `surfaces`
@@ -149,9 +189,11 @@ struct ViewFile {
 };
 
 // Preprocesses `path` with `compiler -E` (empty: $SYLVA_CXX, $CXX, then g++)
-// and reads its commands. A missing file, a preprocessor error or a malformed
-// value of a known command is a ModelError at the file, line and column of
-// the original text.
-ViewFile read_view_file(const std::string& path, const std::string& compiler = "");
+// and reads its commands as `dialect`'s program does. A missing file or a
+// preprocessor error is a ModelError at the file, line and column of the
+// original text; as in lpfg and cpfg, a command the program does not know or
+// whose values it cannot read is only a warning (the command is ignored).
+ViewFile read_view_file(const std::string& path, const std::string& compiler = "",
+                        ViewDialect dialect = ViewDialect::Lpfg);
 
 }  // namespace sylva::io

@@ -115,21 +115,30 @@ TEST(CameraTest, OtherDirectionsKeepUpUp) {
   EXPECT_NEAR(std::hypot(p.x - 50, p.y - 50), 50 * std::numbers::sqrt2, 1e-3);
 }
 
+// lpfg keeps |back - front| / 2 either side of the point looked at
+// (Projection::SetVolume sets its half depth so; the manual describes the
+// planes otherwise), so their order does not matter.
 TEST(CameraTest, FrontAndBackDistances) {
   ViewParameters view;
   view.front_distance = -3;
   view.back_distance = 4;
   Camera parallel(view, square_box(1, 1), 100, 100);
   float centre = parallel.view_distance({0, 0, 0});
-  EXPECT_NEAR(parallel.near_plane(), centre - 3, 1e-4);
-  EXPECT_NEAR(parallel.far_plane(), centre + 4, 1e-4);
+  EXPECT_NEAR(parallel.near_plane(), centre - 3.5f, 1e-4);
+  EXPECT_NEAR(parallel.far_plane(), centre + 3.5f, 1e-4);
+  view.front_distance = 1000;
+  view.back_distance = -1000;
+  Camera reversed(view, square_box(1, 1), 100, 100);
+  EXPECT_NEAR(reversed.near_plane(), centre - 1000, 1e-2);
+  EXPECT_NEAR(reversed.far_plane(), centre + 1000, 1e-2);
 
   view.perspective = true;
-  view.front_distance = 0.5f;
-  view.back_distance = 20;
+  view.front_distance = -1;
+  view.back_distance = 1;
   Camera perspective(view, square_box(1, 1), 100, 100);
-  EXPECT_FLOAT_EQ(perspective.near_plane(), 0.5f);
-  EXPECT_FLOAT_EQ(perspective.far_plane(), 20);
+  centre = perspective.view_distance({0, 0, 0});
+  EXPECT_NEAR(perspective.near_plane(), centre - 1, 1e-4);
+  EXPECT_NEAR(perspective.far_plane(), centre + 1, 1e-4);
 }
 
 TEST(CameraTest, PerspectiveVanishes) {

@@ -350,8 +350,8 @@ TEST(InputFilesTest, ReadsEveryKindInAnyOrder) {
   EXPECT_EQ(in.surfaces[0].v_divisions, 4);
   EXPECT_EQ(in.surfaces[1].name, "petal");
   EXPECT_FLOAT_EQ(in.surfaces[1].size, 1);
-  // The view file's warning (its "angle increment:" is read, for cpfg models).
-  EXPECT_EQ(in.warnings.size(), 1u);
+  // The view file's warnings (its cpfg "angle increment:" and an unknown command).
+  EXPECT_EQ(in.warnings.size(), 2u);
   turtle::TurtleSettings t = in.turtle_settings();
   EXPECT_EQ(t.surfaces, &in.surfaces);
   EXPECT_EQ(t.contours, &in.contours);
@@ -383,13 +383,6 @@ TEST(InputFilesTest, UnknownExtensionsAreIgnoredAndALaterViewFileWins) {
   io::InputFiles cpfg = io::read_input_files({io::InputFile(map2, io::InputKind::Colormap, 1)});
   EXPECT_EQ(cpfg.palette.color(3), (geometry::Rgb{64 / 255.0f, 64 / 255.0f, 64 / 255.0f}));
   EXPECT_EQ(error_of([&] { io::read_input_files({dir + "/gone.con"}); }), dir + "/gone.con: error: cannot open the contour file");
-}
-
-TEST(InputFilesTest, MissingSurfaceIsReportedAtTheViewFileLine) {
-  std::string dir = test::make_temp_dir("inputs-surface");
-  std::string view = write_file(dir, "v.v", "// surfaces\nsurface:   missing.s 2\n");
-  EXPECT_EQ(error_of([&] { io::read_input_files({view}); }),
-            view + ":2:12: error: cannot open the surface file " + dir + "/missing.s");
 }
 
 }  // namespace

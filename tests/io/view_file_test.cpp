@@ -3,9 +3,12 @@
 // line and column of the original text.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "io/input_files.h"
 #include "io/input_test_helpers.h"
 #include "io/view_file.h"
 
@@ -123,10 +126,12 @@ TEST(ViewFileTest, ReadsExternalFilesRelativeToTheViewFile) {
 
 TEST(ViewFileTest, UnknownAndCpfgCommandsAreWarningsAtTheirLine) {
   io::ViewFile view = io::read_view_file(input("plant.v"));
-  // "angle increment:" (line 35) is read for cpfg models' symbols, not warned about.
-  EXPECT_FLOAT_EQ(view.angle_increment, 30);
-  ASSERT_EQ(view.warnings.size(), 1u);
-  EXPECT_EQ(view.warnings[0], input("plant.v") + ":36:1: warning: unknown command 'no such command' ignored");
+  // lpfg does not read cpfg's "angle increment:" (line 35): it says so and
+  // goes on, as it does for a command it does not know (line 36).
+  EXPECT_FLOAT_EQ(view.angle_increment, 45);
+  ASSERT_EQ(view.warnings.size(), 2u);
+  EXPECT_EQ(view.warnings[0], input("plant.v") + ":35:1: warning: cpfg command 'angle increment' ignored: lpfg does not read it");
+  EXPECT_EQ(view.warnings[1], input("plant.v") + ":36:1: warning: unknown command 'no such command' ignored");
 }
 
 TEST(ViewFileTest, DefaultsWhenCommandsAreAbsent) {
@@ -183,7 +188,11 @@ TEST(ViewFileTest, PreprocessorConditionalsAndMultiLineComments) {
   EXPECT_TRUE(view.warnings.empty());
 }
 
-TEST(ViewFileTest, MalformedValueNamesTheOriginalLineAndColumn) {
+// lpfg prints "Error in command: ..." for a value it cannot read and goes on
+// with the next line (DrawParams::Load; seen running lpfg on "line style:
+// wireframe" and "render mode: glossy"): a warning here, the command without
+// effect.
+TEST(ViewFileTest, MalformedValueIsAWarningAtTheOriginalLineAndColumn) {
   std::string dir = test::make_temp_dir("view-malformed");
   // The comment lines before it and the one inside it must not move the position.
   std::string path = write_file(dir, "bad.v",
@@ -191,17 +200,21 @@ TEST(ViewFileTest, MalformedValueNamesTheOriginalLineAndColumn) {
                                 "   two */\n"
                                 "#define N 3\n"
                                 "line style: /* why not */ cylinder\n"
-                                "contour sides: many\n");
-  EXPECT_EQ(error_of([&] { io::read_view_file(path); }),
-            path + ":5:16: error: expected the number of sides, found 'many'");
-
-  std::string after_comment = write_file(dir, "comment.v", "z buffer: /* on or */ maybe\n");
-  EXPECT_EQ(error_of([&] { io::read_view_file(after_comment); }),
-            after_comment + ":1:23: error: expected on or off, found 'maybe'");
-
-  std::string short_line = write_file(dir, "short.v", "\n\nbox: 0 -1 1 -1 1 -1\n");
-  EXPECT_EQ(error_of([&] { io::read_view_file(short_line); }),
-            short_line + ":3:20: error: expected zmax, found the end of the line");
+                                "contour sides: many\n"
+                                "z buffer: /* on or */ maybe\n"
+                                "box: 0 -1 1 -1 1 -1\n"
+                                "render mode: shaded\n");
+  io::ViewFile view = io::read_view_file(path);
+  ASSERT_EQ(view.warnings.size(), 3u);
+  EXPECT_EQ(view.warnings[0], path + ":5:16: warning: expected the number of sides, found 'many'; 'contour sides:' ignored");
+  EXPECT_EQ(view.warnings[1], path + ":6:23: warning: expected on or off, found 'maybe'; 'z buffer:' ignored");
+  EXPECT_EQ(view.warnings[2], path + ":7:20: warning: expected zmax, found the end of the line; 'box:' ignored");
+  EXPECT_EQ(view.contour_sides, 16);
+  EXPECT_FALSE(view.render.z_buffer);
+  EXPECT_FALSE(view.view(0).box);
+  // The lines around them are read.
+  EXPECT_EQ(view.render.line_style, geometry::LineStyle::Cylinder);
+  EXPECT_EQ(view.render.mode, io::RenderMode::Shaded);
 }
 
 TEST(ViewFileTest, MalformedCommandsOfEveryKind) {
@@ -210,31 +223,95 @@ TEST(ViewFileTest, MalformedCommandsOfEveryKind) {
     std::string text, expected;
   };
   std::vector<Case> cases = {
-      {"projection: fisheye", ":1:13: error: expected a projection (parallel, perspective), found 'fisheye'"},
-      {"view: 0 dir: 0 0 0", ":1:14: error: expected the view direction of non-zero length, found 0 0 0"},
-      {"view: 0 zoom: 2", ":1:9: error: expected dir:, up:, pan:, fov:, shift: or scale:, found 'zoom:'"},
-      {"view: main dir: 0 0 1", ":1:7: error: expected a view id (a number, or a name given by an earlier window: command), found 'main'"},
-      {"light: V: 0 0 1 O: 1 1 1", ":1:8: error: expected either a directional light (V:) or a point light or spotlight (O:, P:), not both"},
-      {"light: Q: 1", ":1:8: error: expected V:, O:, P:, A:, D:, S: or T:, found 'Q:'"},
-      {"tropism: E: 0.5", ":1:10: error: expected the tropism vector T: x y z"},
-      {"stropism: 0 1 0", ":1:16: error: expected the elasticity, found the end of the line"},
-      {"surface:", ":1:9: error: expected a surface file name, found the end of the line"},
-      {"surface: a.s 1 4", ":1:17: error: expected the subdivisions along t (sdiv and tdiv go together), found the end of the line"},
-      {"scale: -1", ":1:8: error: expected the scale greater than 0, found '-1'"},
-      {"antialiasing: 11", ":1:15: error: expected a number of samples from 0 to 10, found '11'"},
+      {"projection: fisheye", ":1:13: warning: expected a projection (parallel, perspective), found 'fisheye'; 'projection:' ignored"},
+      {"view: 0 dir: 0 0 0", ":1:14: warning: expected the view direction of non-zero length, found 0 0 0; 'view:' ignored"},
+      {"view: 0 zoom: 2", ":1:9: warning: expected dir:, up:, pan:, fov:, shift: or scale:, found 'zoom:'; 'view:' ignored"},
+      {"view: main dir: 0 0 1", ":1:7: warning: expected a view id (a number, or a name given by an earlier window: command), found 'main'; 'view:' ignored"},
+      {"view: 2 dir: 0 0 1", ":1:7: warning: expected a view id (0, the windows counted from 0), found '2'; 'view:' ignored"},
+      {"light: Q: 1", ":1:8: warning: expected V:, O:, P:, A:, D:, S: or T:, found 'Q:'; 'light:' ignored"},
+      {"light: Diffuse: 1 1 1", ":1:8: warning: expected V:, O:, P:, A:, D:, S: or T:, found 'Diffuse:'; 'light:' ignored"},
+      {"torque: T: 0 1 0 A: 10", ":1:18: warning: lpfg allows no angle A: in a torque; 'torque:' ignored"},
+      {"stropism: 0 1 0", ":1:16: warning: expected the elasticity, found the end of the line; 'stropism:' ignored"},
+      {"surface:", ":1:9: warning: expected a surface file name, found the end of the line; 'surface:' ignored"},
+      {"surface: a.s 1 4", ":1:17: warning: expected the subdivisions along t (sdiv and tdiv go together), found the end of the line; 'surface:' ignored"},
+      {"scale: -1", ":1:8: warning: expected the scale greater than 0, found '-1'; 'scale:' ignored"},
+      {"antialiasing: 11", ":1:15: warning: expected a number of samples from 0 to 10, found '11'; 'antialiasing:' ignored"},
+      {"line style: wireframe", ":1:13: warning: expected a line style (pixel, polygon, cylinder), found 'wireframe'; 'line style:' ignored"},
+      {"box: x: -16,16 y: -16,16 z: -1,1", ":1:6: warning: expected a view id (a number, or a name given by an earlier window: command), found 'x:'; 'box:' ignored"},
+      {"box: 0 1 1 0 1 0 1", ":1:8: warning: expected xmin xmax ymin ymax zmin zmax with each minimum below its maximum; 'box:' ignored"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::string path = write_file(dir, "case" + std::to_string(i) + ".v", cases[i].text + "\n");
-    EXPECT_EQ(error_of([&] { io::read_view_file(path); }), path + cases[i].expected) << cases[i].text;
+    io::ViewFile view;
+    EXPECT_EQ(error_of([&] { view = io::read_view_file(path); }), "") << cases[i].text;
+    ASSERT_EQ(view.warnings.size(), 1u) << cases[i].text;
+    EXPECT_EQ(view.warnings[0], path + cases[i].expected) << cases[i].text;
+    EXPECT_TRUE(view.lights.empty() && view.tropisms.empty() && view.surfaces.empty() && !view.view(0).box &&
+                !view.simple_tropism)
+        << cases[i].text;
   }
 }
 
-TEST(ViewFileTest, ErrorsInsideAnIncludedFileNameThatFile) {
+TEST(ViewFileTest, WarningsInsideAnIncludedFileNameThatFile) {
   std::string dir = test::make_temp_dir("view-include");
   std::string part = write_file(dir, "part.v", "z buffer: on\nrender mode: glossy\n");
   std::string path = write_file(dir, "main.v", "// main\n#include \"part.v\"\nline style: polygon\n");
-  EXPECT_EQ(error_of([&] { io::read_view_file(path); }),
-            part + ":2:14: error: expected a render mode (filled, wireframe, shaded, shadows), found 'glossy'");
+  io::ViewFile view = io::read_view_file(path);
+  ASSERT_EQ(view.warnings.size(), 1u);
+  EXPECT_EQ(view.warnings[0],
+            part + ":2:14: warning: expected a render mode (filled, wireframe, shaded, shadows), found 'glossy'; 'render mode:' ignored");
+  EXPECT_TRUE(view.render.z_buffer);
+}
+
+// lpfg's light: a part is a letter and one more character ("D:", "D "), the
+// numbers after it; the last of V: and O: says where the light is
+// (LightSource::_Load).
+TEST(ViewFileTest, LightPartsAsLpfgReadsThem) {
+  std::string dir = test::make_temp_dir("view-lights");
+  io::ViewFile view = io::read_view_file(write_file(dir, "l.v",
+                                                    "light: V 1 1 1 D 0.5 0.5 0.5\n"
+                                                    "light: V: 0 0 1 O: 1 2 3\n"
+                                                    "light: O: 1 2 3 V: 0 1 0\n"
+                                                    "light: P: 0 -1 0 2 45\n"));
+  ASSERT_EQ(view.lights.size(), 4u);
+  EXPECT_EQ(view.lights[0].diffuse, (geometry::Rgb{0.5f, 0.5f, 0.5f}));
+  EXPECT_EQ(view.lights[1].kind, io::Light::Kind::Point);
+  expect_vec(view.lights[1].position, {1, 2, 3});
+  EXPECT_EQ(view.lights[2].kind, io::Light::Kind::Directional);
+  expect_vec(view.lights[2].direction, {0, 1, 0});
+  // Without O: lpfg's light is directional along +z, and OpenGL makes no
+  // spotlight of a directional light.
+  EXPECT_EQ(view.lights[3].kind, io::Light::Kind::Directional);
+  expect_vec(view.lights[3].direction, {0, 0, 1});
+  EXPECT_TRUE(view.warnings.empty());
+}
+
+// lpfg's tropism without T: bends toward (0,-1,0) (Tropism::_Default).
+TEST(ViewFileTest, TropismDirectionDefaultsDown) {
+  std::string dir = test::make_temp_dir("view-tropism");
+  io::ViewFile view = io::read_view_file(write_file(dir, "t.v", "tropism: E: 0.5\n"));
+  ASSERT_EQ(view.tropisms.size(), 1u);
+  expect_vec(view.tropisms[0].direction, {0, -1, 0});
+  EXPECT_FLOAT_EQ(view.tropisms[0].elasticity, 0.5f);
+}
+
+// Commands lpfg knows but Sylva does not reproduce, and cpfg's commands,
+// are warnings; nothing stops.
+TEST(ViewFileTest, CommandsOfTheOtherProgramAndUnreproducedOnesAreWarnings) {
+  std::string dir = test::make_temp_dir("view-other");
+  io::ViewFile view = io::read_view_file(write_file(dir, "o.v",
+                                                    "viewpoint: 0,0,1\n"
+                                                    "terrain: ground.t\n"
+                                                    "function: f.func\n"
+                                                    "initial line width: 3 s\n"));
+  ASSERT_EQ(view.warnings.size(), 4u);
+  EXPECT_NE(view.warnings[0].find(":1:1: warning: cpfg command 'viewpoint' ignored: lpfg does not read it"), std::string::npos);
+  EXPECT_NE(view.warnings[1].find(":2:1: warning: 'terrain:' ignored: terrains are not supported"), std::string::npos);
+  EXPECT_NE(view.warnings[2].find(":3:1: warning: 'function:' ignored"), std::string::npos);
+  EXPECT_NE(view.warnings[3].find("cpfg command 'initial line width' ignored"), std::string::npos);
+  EXPECT_EQ(view.render.line_style, geometry::LineStyle::Pixel);
+  EXPECT_FALSE(view.initial_line_width);
+  EXPECT_FALSE(view.view(0).cpfg);
 }
 
 TEST(ViewFileTest, PreprocessorErrorsNameTheirLine) {
@@ -265,12 +342,9 @@ TEST(ViewFileTest, GlobalCommandsHoldForEveryViewAndTheLastOneWins) {
                                 "view: Bottom dir: 1 0 0 scale: 0.5\n"
                                 "box: Top -1 1 -1 1 -1 1\n"
                                 "projection: perspective\n"
-                                "view: 3 1 2 3 0.7 0 0 1\n"  // the deprecated form
                                 "scale factor: 0.6\n"
                                 "front distance: 1\n"
-                                "window border: 3 255 0 51\n"
-                                "initial color: 5\n"
-                                "initial line width: 2 s\n");
+                                "window border: 3 255 0 51\n");
   io::ViewFile view = io::read_view_file(path);
   ASSERT_EQ(view.windows.size(), 2u);
   EXPECT_EQ(view.windows[1].name, "Bottom");
@@ -281,20 +355,63 @@ TEST(ViewFileTest, GlobalCommandsHoldForEveryViewAndTheLastOneWins) {
   EXPECT_FLOAT_EQ(view.view(2).scale, 0.6f);  // the later global scale wins
   ASSERT_TRUE(view.view(1).box.has_value());
   expect_vec(view.view(1).box->max, {1, 1, 1});
-  expect_vec(view.view(3).pan, {1, 2, 3});
-  expect_vec(view.view(3).up, {0, 0, 1});
   EXPECT_FALSE(view.view(1).front_distance);  // no back distance: no effect
   EXPECT_EQ(view.window_border_width, 3);
   EXPECT_EQ(view.window_border_color, (geometry::Rgb{1, 0, 0.2f}));
-  turtle::TurtleSettings t = view.turtle_settings();
-  EXPECT_EQ(t.initial_color, 5);
-  EXPECT_FLOAT_EQ(t.initial_width, 2);
-  EXPECT_EQ(view.render.line_style, geometry::LineStyle::Cylinder);
+  EXPECT_TRUE(view.warnings.empty());
+}
+
+// lpfg's view ids index its windows from 0 (DrawParams::IsValidViewId); Sylva
+// numbers window k as view k + 1, and lpfg's id 0 also sets view 0.
+TEST(ViewFileTest, NumericViewIdsCountTheWindowsFromZero) {
+  std::string dir = test::make_temp_dir("view-ids");
+  io::ViewFile view = io::read_view_file(write_file(dir, "ids.v",
+                                                    "window: Left 0 0 0.5 1\n"
+                                                    "window: Right 0.5 0 0.5 1\n"
+                                                    "box: 0 -1 1 -1 1 -1 1\n"
+                                                    "box: 1 -2 2 -2 2 -2 2\n"));
+  ASSERT_TRUE(view.view(1).box && view.view(0).box && view.view(2).box);
+  expect_vec(view.view(1).box->max, {1, 1, 1});
+  expect_vec(view.view(0).box->max, {1, 1, 1});
+  expect_vec(view.view(2).box->max, {2, 2, 2});
+}
+
+// lpfg's deprecated "view: id rx ry rz scale px py pz" (DrawParams::
+// _ReadViewModifier; the manual gives another order): q = qx(rx) qy(ry)
+// qz(rz) turns dir and up as q^-1 v q. rx = 30: dir (0,0,-1) turns by -30
+// degrees about x to (0, -sin 30, -cos 30), up (0,1,0) to (0, cos 30, -sin 30).
+TEST(ViewFileTest, DeprecatedViewFormAsLpfgReadsIt) {
+  std::string dir = test::make_temp_dir("view-old");
+  io::ViewFile view = io::read_view_file(write_file(dir, "old.v", "view: 0 30 0 0 2 1 2 3\n"));
+  const geometry::ViewParameters& v = view.view(0);
+  expect_vec(v.dir, {0, -0.5f, -std::sqrt(3.0f) / 2});
+  expect_vec(v.up, {0, std::sqrt(3.0f) / 2, -0.5f});
+  expect_vec(v.pan, {1, 2, 3});
+  EXPECT_FLOAT_EQ(v.scale, 0.5f);  // a zoom of 2 is the new form's scale: 0.5
 }
 
 TEST(ViewFileTest, ContourSidesBelowThreeAreClamped) {
   std::string dir = test::make_temp_dir("view-sides");
-  EXPECT_EQ(io::read_view_file(write_file(dir, "s.v", "contour sides: 1\n")).contour_sides, 3);
+  io::ViewFile view = io::read_view_file(write_file(dir, "s.v", "contour sides: 1\n"));
+  EXPECT_EQ(view.contour_sides, 3);
+  ASSERT_EQ(view.warnings.size(), 1u);
+  EXPECT_NE(view.warnings[0].find("1 contour sides cannot be drawn; 3 are used, as in lpfg"), std::string::npos);
+}
+
+// Neither lpfg nor cpfg keeps a surface whose file it cannot open (lpfg:
+// "WARNING: Can't open file missing.s - using defaults.", and the surface is
+// not added; cpfg checks the file exists first).
+TEST(ViewFileTest, AMissingSurfaceIsLeftOutWithAWarning) {
+  std::string dir = test::make_temp_dir("inputs-surface");
+  std::filesystem::copy_file(input("leaf.s"), dir + "/leaf.s");
+  std::string view = write_file(dir, "v.v", "// surfaces\nsurface:   missing.s 2\nsurface: leaf.s\n");
+  io::InputFiles in = io::read_input_files({view});
+  ASSERT_EQ(in.surfaces.size(), 1u);  // Surface(0) is leaf.s
+  EXPECT_EQ(in.surfaces[0].name, "leaf");
+  ASSERT_EQ(in.view->surfaces.size(), 1u);
+  ASSERT_EQ(in.warnings.size(), 1u);
+  EXPECT_EQ(in.warnings[0], view + ":2:12: warning: cannot open the surface file " + dir +
+                                "/missing.s; the surface is left out, as in lpfg and cpfg");
 }
 
 }  // namespace

@@ -299,7 +299,7 @@ TEST(CpfgTurtleViewFile, GoldenCpfgViewFilesReadWithoutWarnings) {
   for (const auto& entry : fs::directory_iterator(data_path("golden-cpfg"))) {
     const fs::path view = entry.path() / "view.v";
     if (!fs::exists(view)) continue;
-    io::ViewFile v = io::read_view_file(view.string());
+    io::ViewFile v = io::read_view_file(view.string(), "", io::ViewDialect::Cpfg);
     EXPECT_TRUE(v.warnings.empty()) << view << ": " << (v.warnings.empty() ? "" : v.warnings[0]);
     ++read;
   }
@@ -310,7 +310,7 @@ TEST(CpfgTurtleViewFile, TurtleCommandsReachTheTurtleSettings) {
   const std::string dir = make_temp_dir("cpfg-view-settings");
   std::ofstream(dir + "/v.v") << "angle increment: 30\ncolor increment: 4 2\nline width increment: 0.25\n"
                                  "initial scale: 2\nscale multiplier: 1.5\ninitial color: 9\nviewpoint: 0,0,1\n";
-  io::ViewFile v = io::read_view_file(dir + "/v.v");
+  io::ViewFile v = io::read_view_file(dir + "/v.v", "", io::ViewDialect::Cpfg);
   turtle::TurtleSettings t = v.turtle_settings();
   EXPECT_FLOAT_EQ(t.angle_increment, 30);
   EXPECT_EQ(t.color_increment, 4);
@@ -319,15 +319,14 @@ TEST(CpfgTurtleViewFile, TurtleCommandsReachTheTurtleSettings) {
   EXPECT_FLOAT_EQ(t.scale_multiplier, 1.5f);
   EXPECT_EQ(t.initial_color, 9);
   EXPECT_EQ(t.cpfg_initial_color, 9);
-  // cpfg commands Sylva does not use are still said to be ignored.
-  ASSERT_EQ(v.warnings.size(), 1u);
-  EXPECT_NE(v.warnings[0].find("cpfg command 'viewpoint' ignored"), std::string::npos) << v.warnings[0];
-  // "width increment:" is read as "line width increment:".
-  std::ofstream(dir + "/w.v") << "width increment: 3\n";
-  EXPECT_FLOAT_EQ(io::read_view_file(dir + "/w.v").turtle_settings().width_increment, 3);
+  EXPECT_TRUE(v.warnings.empty()) << v.warnings[0];
+  // An lpfg model's view file does not set them: lpfg does not read them.
+  turtle::TurtleSettings l = io::read_view_file(dir + "/v.v").turtle_settings();
+  EXPECT_FLOAT_EQ(l.angle_increment, 45);
+  EXPECT_EQ(l.initial_color, 1);
   // Without the commands: the manual's defaults.
   std::ofstream(dir + "/empty.v") << "/* nothing */\n";
-  turtle::TurtleSettings d = io::read_view_file(dir + "/empty.v").turtle_settings();
+  turtle::TurtleSettings d = io::read_view_file(dir + "/empty.v", "", io::ViewDialect::Cpfg).turtle_settings();
   EXPECT_FLOAT_EQ(d.angle_increment, 45);
   EXPECT_FLOAT_EQ(d.width_increment, 0);
   EXPECT_EQ(d.color_increment, 1);
@@ -372,10 +371,12 @@ TEST(CpfgTurtleEndToEnd, SylvaRunDrawsTheSnowflakeToPngAndSvg) {
   stbi_image_free(data);
   EXPECT_GT(drawn, 100u);
   EXPECT_LT(drawn, static_cast<std::size_t>(w) * h / 2);
+  // "initial line width: 1" without a style draws polygons in cpfg (its
+  // ReadViewData sets the polygon line style), one per F.
   const std::string svg = read_text(out + "/snowflake.svg");
-  std::size_t lines = 0;
-  for (std::size_t at = svg.find("<line"); at != std::string::npos; at = svg.find("<line", at + 1)) ++lines;
-  EXPECT_GT(lines, 0u) << svg.substr(0, 400);
+  std::size_t polygons = 0;
+  for (std::size_t at = svg.find("<polygon"); at != std::string::npos; at = svg.find("<polygon", at + 1)) ++polygons;
+  EXPECT_GT(polygons, 0u) << svg.substr(0, 400);
 }
 
 }  // namespace
