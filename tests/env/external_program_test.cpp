@@ -107,7 +107,7 @@ env::CommSpec spec_for(const Folder& f, const std::string& executable) {
 
 std::string failure(const env::CommSpec& spec, double timeout = 5) {
   try {
-    std::unique_ptr<env::Field> field = env::make_field(spec, env::FieldOptions{timeout});
+    std::unique_ptr<env::Field> field = env::make_field(spec, [&] { env::FieldOptions o; o.timeout_seconds = timeout; return o; }());
     env::Query q;
     q.id = 4;
     q.module = env::ModuleRecord{"?E", {1}};
