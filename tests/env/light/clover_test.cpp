@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <numbers>
 
 #include "env/light/light_test_support.h"
@@ -197,15 +198,14 @@ std::vector<std::uint8_t> sgi_image(int (*value)(int, int, int)) {
 }
 
 // A cpfg model with two leaves, a small removal and queries around them on
-// an 8 x 8 grid with a 3 x 3 SGI image. The expected string is what the
-// reference cpfg printed with the reference clover (cpfg -g -M plant.mat
-// -str out.str -e light.e light.l light.v): answers travel as "%g".
-TEST(CloverTest, ACpfgModelGetsTheReferenceAnswers) {
-  const std::string dir = make_temp_dir("clover-cpfg");
-  const std::vector<std::uint8_t> image =
-      sgi_image([](int c, int y, int x) { return c == 0 ? 60 * x + 20 * y : c == 1 ? 40 + 70 * y + 20 * x : 7; });
-  std::ofstream(dir + "/light.rgb", std::ios::binary).write(reinterpret_cast<const char*>(image.data()),
-                                                             static_cast<std::streamsize>(image.size()));
+// an 8 x 8 grid, run with the image `image` (written as `name`). The
+// expected strings below are what the reference cpfg printed with the
+// reference clover (cpfg -g -M plant.mat -str out.str -e light.e light.l
+// light.v): answers travel as "%g".
+std::string run_light_model(const std::string& test, const std::string& name, const std::vector<std::uint8_t>& image) {
+  const std::string dir = make_temp_dir(test);
+  std::ofstream(dir + "/" + name, std::ios::binary)
+      .write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
   std::ofstream(dir + "/light.l")
       << "Lsystem: 1\nderivation length: 1\nAxiom: @M(0,0,0)?E(1,0.19635)@M(0.3,0,0)?E(1,0.19635)@M(0.3,0,0)"
          "?E(2,0.01)@M(0.1,0.1,0)?E(0,0)@M(-0.2,0.05,0)?E(0,0)@M(0.55,0.05,0)?E(0,0)@M(0.8,0.05,0)?E(0,0)"
@@ -216,15 +216,70 @@ TEST(CloverTest, ACpfgModelGetsTheReferenceAnswers) {
                                      "turtle position: %g %g %g\n";
   // "2,2" and "8 x 8": the separators clover's reader accepts.
   std::ofstream(dir + "/light.spec") << "grid size: 8 x 8\ngrid range: 2,2\ngrid position: -1 -1\n"
-                                        "transmittance: 0.5\ninput image: light.rgb\n";
+                                        "transmittance: 0.5\ninput image: " << name << "\n";
   ProcessResult run = run_sylva({"run", "-e", "light.e", "light.l"}, dir);
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_EQ(run.out,
-            "@M(0,0,0)?E(1,0.19635)@M(0.3,0,0)?E(1,0.19635)@M(0.3,0,0)?E(2,0.01)@M(0.1,0.1,0)?E(0.254902,0.625)"
-            "@M(-0.2,0.05,0)?E(0.107843,0.15625)@M(0.55,0.05,0)?E(0.254902,0.625)@M(0.8,0.05,0)?E(0.588235,1.09375)"
-            "@M(-0.55,0.05,0)?E(0.431373,0.15625)@M(-0.45,0.05,0)?E(0.215686,0.15625)@M(1,0,0)?E(0,0)"
-            "@M(-1,-1,0)?E(0.156863,0)@M(0.05,0.55,0)?E(0.509804,0.625)@M(0.05,-0.45,0)?E(0.117647,0.46875)"
-            "@M(0.9,0.9,0)?E(0.862745,1.25)@M(0.9,-0.9,0)?E(0.313726,0.9375)@M(-0.9,0.9,0)?E(0.705882)\n");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return run.out;
+}
+
+constexpr const char* kLightModelStart =
+    "@M(0,0,0)?E(1,0.19635)@M(0.3,0,0)?E(1,0.19635)@M(0.3,0,0)?E(2,0.01)@M(0.1,0.1,0)";
+
+TEST(CloverTest, ACpfgModelGetsTheReferenceAnswersWithAnSgiImage) {
+  const std::vector<std::uint8_t> image =
+      sgi_image([](int c, int y, int x) { return c == 0 ? 60 * x + 20 * y : c == 1 ? 40 + 70 * y + 20 * x : 7; });
+  EXPECT_EQ(run_light_model("clover-cpfg-sgi", "light.rgb", image),
+            std::string(kLightModelStart) +
+                "?E(0.254902,0.625)"
+                "@M(-0.2,0.05,0)?E(0.107843,0.15625)@M(0.55,0.05,0)?E(0.254902,0.625)@M(0.8,0.05,0)?E(0.588235,1.09375)"
+                "@M(-0.55,0.05,0)?E(0.431373,0.15625)@M(-0.45,0.05,0)?E(0.215686,0.15625)@M(1,0,0)?E(0,0)"
+                "@M(-1,-1,0)?E(0.156863,0)@M(0.05,0.55,0)?E(0.509804,0.625)@M(0.05,-0.45,0)?E(0.117647,0.46875)"
+                "@M(0.9,0.9,0)?E(0.862745,1.25)@M(0.9,-0.9,0)?E(0.313726,0.9375)@M(-0.9,0.9,0)?E(0.705882)\n");
+}
+
+// A 3 x 3 Targa image, 24 bits, origin at the top left; file row k, column x
+// holds blue 5 + k, green 30 + 60x + 10k, red 100 + 40k + 20x. `runs`
+// encodes it in packets: row 0 one raw packet, row 1 a run of two and a raw
+// one, row 2 a run of three repeating its first pixel.
+std::vector<std::uint8_t> targa_image(bool runs) {
+  auto pixel = [](int k, int x) {
+    return std::vector<std::uint8_t>{std::uint8_t(5 + k), std::uint8_t(30 + 60 * x + 10 * k),
+                                     std::uint8_t(100 + 40 * k + 20 * x)};
+  };
+  std::vector<std::uint8_t> bytes = {0, 0, std::uint8_t(runs ? 10 : 2), 0, 0, 0, 0, 0, 0, 0, 0, 0, 3, 0, 3, 0, 24, 0x20};
+  auto add = [&](const std::vector<std::uint8_t>& b) { bytes.insert(bytes.end(), b.begin(), b.end()); };
+  if (!runs) {
+    for (int k = 0; k < 3; ++k)
+      for (int x = 0; x < 3; ++x) add(pixel(k, x));
+    return bytes;
+  }
+  add({0x02});
+  for (int x = 0; x < 3; ++x) add(pixel(0, x));
+  add({0x81});
+  add(pixel(1, 0));
+  add({0x00});
+  add(pixel(1, 2));
+  add({0x82});
+  add(pixel(2, 0));
+  return bytes;
+}
+
+TEST(CloverTest, ACpfgModelGetsTheReferenceAnswersWithTargaImages) {
+  EXPECT_EQ(run_light_model("clover-cpfg-tga", "light.tga", targa_image(false)),
+            std::string(kLightModelStart) +
+                "?E(0.313726,0.78125)@M(-0.2,0.05,0)?E(0.137255,0.3125)@M(0.55,0.05,0)?E(0.313726,0.78125)"
+                "@M(0.8,0.05,0)?E(0.705882,1.25)@M(-0.55,0.05,0)?E(0.54902,0.3125)@M(-0.45,0.05,0)?E(0.27451,0.3125)"
+                "@M(1,0,0)?E(0,0)@M(-1,-1,0)?E(0.705882,0.390625)@M(0.05,0.55,0)?E(0.627451,0.78125)"
+                "@M(0.05,-0.45,0)?E(0.392157,0.859375)@M(0.9,0.9,0)?E(0.54902,1.17188)@M(0.9,-0.9,0)"
+                "?E(0.862745,1.32812)@M(-0.9,0.9,0)?E(0.392157)\n");
+  // In run-length packets the light comes from the pixels' blue.
+  EXPECT_EQ(run_light_model("clover-cpfg-tga-rle", "light_rle.tga", targa_image(true)),
+            std::string(kLightModelStart) +
+                "?E(0.0117647,0.3125)@M(-0.2,0.05,0)?E(0.00588235,0.3125)@M(0.55,0.05,0)?E(0.0117647,0.3125)"
+                "@M(0.8,0.05,0)?E(0.705882,1.25)@M(-0.55,0.05,0)?E(0.0235294,0.3125)@M(-0.45,0.05,0)"
+                "?E(0.0117647,0.3125)@M(1,0,0)?E(0,0)@M(-1,-1,0)?E(0.027451,0.390625)@M(0.05,0.55,0)"
+                "?E(0.0235294,0.3125)@M(0.05,-0.45,0)?E(0.0137255,0.390625)@M(0.9,0.9,0)?E(0.54902,1.17188)"
+                "@M(0.9,-0.9,0)?E(0.027451,0.390625)@M(-0.9,0.9,0)?E(0.392157)\n");
 }
 
 // The specification file as clover reads it: "100x100view.pnl" is two
