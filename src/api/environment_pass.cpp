@@ -3,7 +3,6 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
-#include <limits>
 
 #include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
@@ -91,68 +90,47 @@ std::vector<float> parameters_as_floats(const ModuleTypes& types, ModuleId id, c
   return PrintedParameterReader(text).numbers();
 }
 
-// Walks the string with the turtle and notes every communication module of
-// the string. One that an interpretation rule replaces is noted too, with the
-// turtle where its interpretation starts: the string's module is what the
-// answer is written into. Modules the rules produce are not noted: an answer
-// to them would have nowhere to go.
+// Walks the string with the turtle, as lpfg and cpfg do in their
+// environmental pass, and notes every communication module the turtle meets:
+//  - a module of the string, interpreted as itself: sent, and answered in the
+//    string;
+//  - a module an interpretation rule replaces is not met, so not sent;
+//  - a module an interpretation rule produces is sent (the program sees it)
+//    but its answer has nowhere to go: cpfg drops it, and Sylva does the same
+//    for lpfg, whose answer would land on whatever module of the string has
+//    the produced module's place in the rule's successor.
 class QueryCollector : public derive::InterpretedModuleVisitor {
  public:
   QueryCollector(const EnvironmentPass& pass, const env::CommSpec& spec, const turtle::TurtleSettings& settings,
-                 const ModuleTypes& types, const StringView& string)
-      : pass_(pass),
-        spec_(spec),
-        types_(types),
-        string_(string),
-        cursor_(string.begin),
-        turtle_(settings, types, nullptr) {}
+                 const ModuleTypes& types)
+      : pass_(pass), spec_(spec), types_(types), turtle_(settings, types, nullptr) {}
 
   void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) override {
-    // Modules before this one that were never visited were replaced by
-    // rules that produced nothing visible from them.
-    note_replaced_before(source_index);
-    if (!in_string && source_index == cursor_index_) note_string_module();  // a rule's first module
+    const int count = pass_.parameter_count(id);
+    if (count >= 0) note(id, params, count, source_index, in_string);
     turtle_.visit(id, params, source_index, in_string);
-    if (in_string && source_index == cursor_index_) note_string_module();
   }
 
-  void finish() {
-    note_replaced_before(std::numeric_limits<std::uint32_t>::max());
-    turtle_.finish();
-  }
+  void finish() { turtle_.finish(); }
 
   struct Target {
     ModuleId id;
-    unsigned char* params;  // in the string
+    unsigned char* params;  // in the string; null for a module a rule produced
     int count;
   };
   std::vector<env::Query> queries;
   std::vector<Target> targets;
 
  private:
-  void note_replaced_before(std::uint32_t index) {
-    while (cursor_index_ < index && cursor_ < string_.end) note_string_module();
-  }
-
-  // Notes the string's module at the cursor if it communicates, and moves on.
-  void note_string_module() {
-    const ModuleId id = string_.id_at(cursor_);
-    auto* params = const_cast<unsigned char*>(string_.data + cursor_ + sizeof(ModuleId));
-    const int count = pass_.parameter_count(id);
-    if (count >= 0) note(id, params, count);
-    cursor_ = string_.next(cursor_);
-    ++cursor_index_;
-  }
-
-  void note(ModuleId id, unsigned char* params, int count) {
+  void note(ModuleId id, unsigned char* params, int count, std::uint32_t place, bool in_string) {
     env::Query q;
-    q.id = cursor_index_;
+    q.id = place;
     q.module.symbol = types_.name(id);
     q.module.parameters.resize(static_cast<std::size_t>(count));
     std::memcpy(q.module.parameters.data(), params, sizeof(float) * static_cast<std::size_t>(count));
     q.turtle = turtle_state();
     queries.push_back(std::move(q));
-    targets.push_back(Target{id, params, count});
+    targets.push_back(Target{id, in_string ? params : nullptr, count});
   }
 
   env::TurtleState turtle_state() const {
@@ -176,9 +154,6 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
   const EnvironmentPass& pass_;
   const env::CommSpec& spec_;
   const ModuleTypes& types_;
-  const StringView string_;
-  std::size_t cursor_;             // the string's next module not yet noted
-  std::uint32_t cursor_index_ = 0;  // its place in the string
   turtle::TurtleInterpreter turtle_;
 };
 
@@ -211,7 +186,7 @@ EnvironmentPass::EnvironmentPass(env::CommSpec spec, const ModuleTypes& types, b
 void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSettings& settings, env::Field& field) {
   const ModuleTypes& types = derivation.types();
   const StringView view = derivation.string().view(types);
-  QueryCollector collector(*this, spec_, settings, types, view);
+  QueryCollector collector(*this, spec_, settings, types);
   derivation.interpret(collector);
   collector.finish();
 
@@ -220,6 +195,7 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
     // interpretation rules: the string is what the model rewrites).
     for (std::size_t k = 0; k < collector.queries.size(); ++k) {
       const auto& target = collector.targets[k];
+      if (!target.params) continue;  // produced by a rule: its neighbours are not the string's
       const std::size_t at = static_cast<std::size_t>(target.params - view.data) - sizeof(ModuleId);
       const std::size_t next = view.next(at);
       if (next >= view.end) continue;
@@ -239,14 +215,18 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
     const auto& target = collector.targets[k];
     const env::Answer& answer = answers[k];
     check_answer(collector.queries[k], answer, step);
-    if (clean_ea20_ && target.id == ea20_) std::memset(target.params, 0, sizeof(float) * env::kMaxParameters);
+    if (!target.params) continue;  // produced by an interpretation rule: nowhere to write
+    // lpfg zeroes an EA20 when an answer for it arrives (-cleanEA20).
+    if (clean_ea20_ && target.id == ea20_ && answer.set.any())
+      std::memset(target.params, 0, sizeof(float) * env::kMaxParameters);
     if (answer.set.any()) ++answered;
     for (int i = 0; i < target.count; ++i)
       if (answer.set.test(static_cast<std::size_t>(i)))
         std::memcpy(target.params + sizeof(float) * static_cast<std::size_t>(i), &answer.value[i], sizeof(float));
   }
   if (spec_.verbose && verbose_)
-    verbose_("environment: step " + std::to_string(step) + ": " + std::to_string(collector.queries.size()) +
+    verbose_("environment: pass before step " + std::to_string(step + 1) + ": " +
+             std::to_string(collector.queries.size()) +
              " communication modules, " + std::to_string(answered) + " answered\n");
 }
 
@@ -260,7 +240,7 @@ void EnvironmentPass::check_answer(const env::Query& query, const env::Answer& a
                                               std::to_string(query.id) + " (" + query.module.symbol +
                                               "), which has " + std::to_string(count) +
                                               (count == 1 ? " parameter" : " parameters") +
-                                              ", during the environmental pass after step " + std::to_string(step));
+                                              ", during the environmental pass before step " + std::to_string(step + 1));
   }
 }
 

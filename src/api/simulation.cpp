@@ -51,12 +51,16 @@ void Simulation::start_environment(const EnvironmentOptions& options, const std:
   }
   if (comm_file.empty() && !options.field) return;
   env::CommSpec spec = comm_file.empty() ? env::CommSpec::everything() : env::read_comm_spec(comm_file);
+  for (const std::string& warning : spec.warnings) tell(messages, warning + "\n");
   auto verbose = [messages](const std::string& text) { tell(messages, text); };
   // Made first: a model the environment cannot serve fails before a program is started.
   environment_pass_ = std::make_unique<EnvironmentPass>(spec, derivation_->types(), options.clean_ea20, model_path_,
                                                         std::move(verbose));
-  field_ = options.field ? options.field
-                         : std::shared_ptr<env::Field>(env::make_field(spec, env::FieldOptions{options.timeout_seconds}));
+  env::FieldOptions field_options;
+  field_options.timeout_seconds = options.timeout_seconds;
+  field_options.master = derivation_->types().cpfg() ? env::ModelingProgram::cpfg : env::ModelingProgram::lpfg;
+  field_options.warn = [messages](const std::string& text) { tell(messages, text); };
+  field_ = options.field ? options.field : std::shared_ptr<env::Field>(env::make_field(spec, field_options));
   derivation_->set_environment_pass(
       [this](derive::Derivation& d) { environment_pass_->run(d, turtle_settings_, *field_); });
 }

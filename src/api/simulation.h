@@ -25,7 +25,7 @@ class ModelRequests;
 struct OutputOptions;
 
 // Open L-systems: the environment the model's communication modules (E1,
-// E2, EA20, cpfg's ?E) talk to after every step. See docs/environment.md.
+// E2, EA20, cpfg's ?E) talk to before every step. See docs/environment.md.
 struct EnvironmentOptions {
   // The communication specification file (.e): the program to run and what
   // to send it. A .e file among SimulationOptions::input_files is taken too.

@@ -161,7 +161,6 @@ void Derivation::begin() {
     if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
   }
   if (uses_query_modules_ && query_pass_) query_pass_(*this);
-  if (environment_pass_ && c.environment) environment_pass_(*this);
   begun_ = true;
   phase(Phase::Started, false);
 }
@@ -188,6 +187,10 @@ void Derivation::step() {
   if (!begun_) begin();
   abi::ControlState& c = control();
   const bool stopped_before = c.stop_requested;
+  // lpfg's Derive and cpfg's Derive both begin with the environmental pass,
+  // before StartEach: a run of n steps has n passes, the last one before the
+  // last step, so the final string holds what that step produced.
+  if (environment_pass_ && c.environment) environment_pass_(*this);
   if (model_.start_each) model_.start_each();
   require_defined_group(model_, c.next_group);
   c.current_group = c.next_group;
@@ -210,7 +213,6 @@ void Derivation::step() {
   decompose();
   if (uses_query_modules_ && query_pass_) query_pass_(*this);
   if (model_.end_each) model_.end_each();
-  if (environment_pass_ && c.environment) environment_pass_(*this);
   phase(Phase::Stepped, stopped_before);
 }
 

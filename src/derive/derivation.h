@@ -93,13 +93,11 @@ class Derivation {
   // EndEach) when the model uses query modules.
   void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
   // The environmental pass of open L-systems (communication modules E1, E2,
-  // EA20, cpfg's ?E): called after the axiom and after every step (after
-  // EndEach), while the model's Environment() switch is on (it is at every
-  // begin(); Start may turn it off). The manuals speak of a pass "after each
-  // derivation step" (EnviroManual 1.4, LPFG manual 6.1.3); the pass after the
-  // axiom is the one the query modules get too, and published open L-systems
-  // need it: the clover model's axiom A(1)?E(0,0) lets its apex grow only if
-  // the first step already sees the light the environment answered.
+  // EA20, cpfg's ?E): called at the start of every step, before StartEach,
+  // while the model's Environment() switch is on (it is at every begin();
+  // Start may turn it off). lpfg and cpfg both run it there (their Derive
+  // starts with it), so the first pass sees the axiom and no pass follows the
+  // last step.
   void set_environment_pass(std::function<void(Derivation&)> pass) { environment_pass_ = std::move(pass); }
 
  private:

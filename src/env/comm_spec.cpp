@@ -23,8 +23,6 @@ class SpecParser {
     const int last_line = std::max(number, 1);
     if (spec_.executable.empty())
       fail(last_line, std::string::npos, "missing 'executable:' (the environmental program to run)");
-    if (spec_.communication_type.empty())
-      fail(last_line, std::string::npos, "missing 'communication type:' (pipes, files or memory)");
     return std::move(spec_);
   }
 
@@ -34,13 +32,20 @@ class SpecParser {
                      message);
   }
 
+  void warn(int line, std::size_t offset, const std::string& message) {
+    spec_.warnings.push_back(spec_.path + ":" + std::to_string(line) + ":" + std::to_string(offset + 1) +
+                             ": warning: " + message);
+  }
+
   void parse_line(const std::string& line, int number) {
     std::size_t start = 0;
     while (start < line.size() && is_blank(line[start])) ++start;
     if (start == line.size() || line[start] == '#') return;  // blank, or a comment
     const std::size_t colon = line.find(':', start);
-    if (colon == std::string::npos)
-      fail(number, start, "expected 'command: value' (executable, communication type, turtle position, ...)");
+    if (colon == std::string::npos) {
+      warn(number, start, "not a 'command: value' line; ignored, as lpfg and cpfg ignore it");
+      return;
+    }
     const std::string command = normalized_keyword(std::string_view(line).substr(start, colon - start));
     std::size_t value_start = colon + 1;
     while (value_start < line.size() && is_blank(line[value_start])) ++value_start;
@@ -58,9 +63,12 @@ class SpecParser {
     } else if (command == "communication type") {
       once(at, command);
       const std::string type = lowercase(value);
-      if (type != "pipes" && type != "files" && type != "memory" && type != "sockets")
-        fail(number, value_start, "expected 'pipes', 'files' or 'memory' as the communication type, not '" + value + "'");
       spec_.communication_type = type;
+      // The first word names the means; cpfg's may be followed by a number
+      // of queries per chunk.
+      const std::string means = type.substr(0, type.find_first_of(" \t"));
+      if (means != "pipes" && means != "files" && means != "memory" && means != "sockets")
+        warn(number, value_start, "unknown communication type '" + value + "'; the communication library uses pipes");
     } else if (command == "turtle position") {
       format(at, command, value, 3, spec_.position);
     } else if (command == "turtle heading") {
@@ -75,12 +83,13 @@ class SpecParser {
       format(at, command, value, 1, spec_.scale_factor);
     } else if (command == "following module") {
       once(at, command);
-      spec_.following_module = flag(at, value);
+      spec_.following_module = flag(at, value, spec_.following_module);
     } else if (command == "verbose") {
       once(at, command);
-      spec_.verbose = flag(at, value);
+      spec_.verbose = flag(at, value, spec_.verbose);
     } else if (command == "interpreted modules") {
       once(at, command);
+      spec_.interpreted_modules.clear();
       std::string word;
       for (char c : value + " ") {
         if (is_blank(c) || c == ',') {
@@ -91,10 +100,11 @@ class SpecParser {
         }
       }
     } else {
-      fail(number, start,
+      warn(number, start,
            "unknown command '" + command +
-               "' (expected executable, communication type, turtle position, turtle heading, turtle left, turtle "
-               "up, turtle line width, turtle scale factor, following module, interpreted modules or verbose)");
+               "' ignored, as lpfg and cpfg ignore it (they know executable, communication type, turtle position, "
+               "turtle heading, turtle left, turtle up, turtle line width, turtle scale factor, following module, "
+               "interpreted modules and verbose)");
     }
   }
 
@@ -104,9 +114,10 @@ class SpecParser {
     std::size_t value;
   };
 
+  // A command given again replaces the first, as in lpfg and cpfg.
   void once(const Place& at, const std::string& command) {
     if (std::find(seen_.begin(), seen_.end(), command) != seen_.end())
-      fail(at.line, at.command, "'" + command + ":' is given twice");
+      warn(at.line, at.command, "'" + command + ":' is given again; this one replaces the first");
     seen_.push_back(command);
   }
 
@@ -119,9 +130,11 @@ class SpecParser {
     if (out.count == 0) fail(at.line, at.value, "expected a format with at least one conversion, such as %g");
   }
 
-  bool flag(const Place& at, const std::string& value) const {
+  // A switch that is neither on nor off is left as it was, with a warning.
+  bool flag(const Place& at, const std::string& value, bool current) {
     if (const std::optional<bool> on = parse_switch(value)) return *on;
-    fail(at.line, at.value, "expected yes or no, not '" + value + "'");
+    warn(at.line, at.value, "expected yes or no (on or off), not '" + value + "'; left as it was");
+    return current;
   }
 
   const std::string& text_;

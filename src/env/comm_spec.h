@@ -22,8 +22,8 @@ struct CommSpec {
   std::string executable;  // the command line, as written
   int executable_line = 0;
   int executable_column = 0;  // 1-based, where the command line starts
-  // files, memory, pipes or sockets. Whatever it says, Sylva uses pipes (or
-  // no transport at all for a built-in program); the value is checked only.
+  // files, memory, pipes or sockets (lower case, as written). Whatever it
+  // says, Sylva uses pipes (or no transport at all for a built-in program).
   std::string communication_type;
 
   TurtleFormat position, heading, left, up, line_width, scale_factor;
@@ -31,14 +31,20 @@ struct CommSpec {
   // Modules whose graphics cpfg sends after a communication module (QuasiMC).
   std::vector<std::string> interpreted_modules;
   bool verbose = false;
+  // "file:line:column: warning: ..." for what lpfg and cpfg pass over: unknown
+  // commands, lines that are not commands, commands given again, switches
+  // that are neither on nor off, an unknown communication type.
+  std::vector<std::string> warnings;
 
   // A spec for an environment given in code rather than by a .e file: every
   // turtle field with all its values ("%.9g" each), and the following module.
   static CommSpec everything();
 };
 
-// Reads a .e file; a ModelError at file:line:column for anything malformed
-// (unknown command, a missing executable or communication type, a bad format).
+// Reads a .e file. What lpfg and cpfg pass over is a warning (`warnings`);
+// a ModelError at file:line:column stops the run where they would fail or
+// garble the exchange: no executable, a turtle format that printf cannot
+// apply to the turtle's numbers or that sends no number.
 CommSpec read_comm_spec(const std::string& path);
 // The same from text already read; `path` names it in errors.
 CommSpec parse_comm_spec(const std::string& text, const std::string& path);

@@ -168,7 +168,7 @@ std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& opti
   const ProgramInvocation invocation = invocation_of(spec);
   const std::string base = fs::path(invocation.program).filename().string();
   for (const Builtin& builtin : kBuiltins)
-    if (base == builtin.name) return builtin.make(invocation);
+    if (base == builtin.name) return through_comm_library(builtin.make(invocation), spec, options.master, options.warn);
   if (ends_with(invocation.program, ".so")) return load_plugin(invocation, where);
 
   const fs::path program = find_program(invocation);

@@ -11,10 +11,12 @@
 //    else in the .e file's folder.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "env/comm_library_transport.h"
 #include "env/comm_spec.h"
 #include "env/field.h"
 #include "env/program.h"
@@ -38,6 +40,13 @@ struct FieldOptions {
   // How long an external program may take to answer one pass before it is
   // stopped and the run fails.
   double timeout_seconds = 60;
+  // The modeling program whose side of the Virtual Laboratory's
+  // communication library the built-in programs are served as
+  // (comm_library_transport.h): lpfg for L+C models, cpfg for cpfg models.
+  ModelingProgram master = ModelingProgram::lpfg;
+  // Warnings of the built-in programs and of that transport; standard error
+  // when empty.
+  std::function<void(const std::string&)> warn;
 };
 
 // The executable: line of `spec` split into words as a shell would.

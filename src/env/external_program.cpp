@@ -347,7 +347,7 @@ void ExternalProgramField::answer(std::span<const Query> queries, std::span<Answ
   std::unordered_map<std::uint64_t, std::size_t> by_id;
   for (std::size_t k = 0; k < queries.size(); ++k) by_id.emplace(queries[k].id, k);
 
-  const std::string during = "during the environmental pass after step " + std::to_string(step);
+  const std::string during = "during the environmental pass before step " + std::to_string(step + 1);
   p.exchange(encode_pass(queries, p.spec, step), "end", during, [&](const std::string& line) {
     // "ID INDEX VALUE"
     const char* s = line.c_str();

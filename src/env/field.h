@@ -1,6 +1,7 @@
 // The interface between a model and its environment (open L-systems).
 //
-// After a derivation step the engine interprets the string and, for every
+// Before each derivation step (as lpfg and cpfg do: n passes for n steps,
+// the first over the axiom) the engine interprets the string and, for every
 // communication module (lpfg E1/E2/EA20, cpfg ?E), records a Query: the
 // module's parameters, the turtle state there, and optionally the module that
 // follows it. All queries of one pass go to the Field at once, in string
@@ -54,12 +55,15 @@ struct ModuleRecord {
 };
 
 struct Query {
-  // Position of the communication module in the string: unique within a pass,
-  // increasing in string order.
+  // Position of the communication module in the string, increasing in string
+  // order. A module an interpretation rule produced carries the place of the
+  // module the rule replaced (it is not in the string: its answer is not
+  // used, as in cpfg), so several may share one.
   std::uint64_t id = 0;
   ModuleRecord module;
   // The next module in the string; symbol empty when the .e file does not ask
-  // for it ("following module: no") or the string ends.
+  // for it ("following module: no"), the string ends, or the module was
+  // produced by an interpretation rule.
   ModuleRecord following;
   TurtleState turtle;
 };
@@ -81,7 +85,7 @@ class Field {
 
   // Answers every query of one environmental pass. `answers` has one entry per
   // query, all unset on entry. `step` is the number of derivation steps done
-  // (0 for the pass after the axiom).
+  // (0 for the pass over the axiom, before step 1).
   // Throws ModelError (or std::runtime_error) with a message naming the
   // program on failure.
   virtual void answer(std::span<const Query> queries, std::span<Answer> answers, int step) = 0;

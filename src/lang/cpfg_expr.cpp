@@ -414,14 +414,31 @@ inline double sylva_cpfg_atan2(double y, double x) { return ::std::atan2(y, x) /
 inline double sylva_cpfg_pow(double x, double y) { return ::std::pow(x, y); }
 inline double sylva_cpfg_sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
 inline double sylva_cpfg_ran(double x) { return x * ::sylva::rt::next_rand48(); }
+// cpfg's nran (cpfg/utility.c): the polar method, keeping the second value
+// of each pair for the next call. The pair's state starts "full" with 0, so
+// the first call of a run returns the mean; srand() empties it.
+inline int sylva_cpfg_nran_kept = 10;
+inline double sylva_cpfg_nran_value = 0;
 inline double sylva_cpfg_srand(double seed) {
   ::sylva::rt::control.rand48 = ((static_cast<::std::uint64_t>(static_cast<long>(seed)) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
+  sylva_cpfg_nran_kept = 0;
   return 0.0;
 }
 inline double sylva_cpfg_nran(double mean, double sd) {
-  double u1 = ::sylva::rt::next_rand48(), u2 = ::sylva::rt::next_rand48();
-  if (u1 <= 0) u1 = 1e-300;
-  return mean + sd * ::std::sqrt(-2.0 * ::std::log(u1)) * ::std::cos(2.0 * 3.14159265358979323846 * u2);
+  if (sylva_cpfg_nran_kept == 0) {
+    double v1, v2, rsq;
+    do {
+      v1 = 2.0 * ::sylva::rt::next_rand48() - 1.0;
+      v2 = 2.0 * ::sylva::rt::next_rand48() - 1.0;
+      rsq = v1 * v1 + v2 * v2;
+    } while (rsq >= 1.0 || rsq == 0.0);
+    const double fac = ::std::sqrt(-2.0 * ::std::log(rsq) / rsq);
+    sylva_cpfg_nran_value = v1 * fac;
+    sylva_cpfg_nran_kept = 1;
+    return v2 * fac * sd + mean;
+  }
+  sylva_cpfg_nran_kept = 0;
+  return sylva_cpfg_nran_value * sd + mean;
 }
 // bran(a,b): a beta variate, X/(X+Y) of gamma variates X ~ G(a), Y ~ G(b)
 // (Marsaglia and Tsang's method); NaN unless a > 0 and b > 0.

@@ -1,6 +1,7 @@
 // The communication specification file (.e, EnviroManual section 2): what
-// each command sets, how many values a turtle format sends, and the errors
-// for malformed files, which point at the file, line and column.
+// each command sets, how many values a turtle format sends, the warnings for
+// what lpfg and cpfg pass over and the errors where they could not go on,
+// which point at the file, line and column.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -71,13 +72,9 @@ TEST(CommSpec, ReadsAFile) {
   EXPECT_EQ(spec.position.count, 3);
 }
 
-TEST(CommSpec, MalformedFilesPointAtTheFault) {
-  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle position %g\n"),
-            "plant.e:3:1: error: expected 'command: value' (executable, communication type, turtle position, ...)");
-  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\n  turtle colour: %g\n"),
-            "plant.e:3:3: error: unknown command 'turtle colour' (expected executable, communication type, turtle "
-            "position, turtle heading, turtle left, turtle up, turtle line width, turtle scale factor, following "
-            "module, interpreted modules or verbose)");
+// Where lpfg or cpfg would print a format's text for numbers it cannot take,
+// or have no program to start, the run stops.
+TEST(CommSpec, UnusableFilesPointAtTheFault) {
   // The fourth conversion of "%g %g %g %g" starts at column 27.
   EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle position: %g %g %g %g\n"),
             "plant.e:3:27: error: at most 3 values can be sent for this field");
@@ -87,18 +84,40 @@ TEST(CommSpec, MalformedFilesPointAtTheFault) {
             "plant.e:3:17: error: expected a number conversion such as %g, %f or %.3f");
   EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle up: none\n"),
             "plant.e:3:12: error: expected a format with at least one conversion, such as %g");
-  EXPECT_EQ(error_of("executable: a\ncommunication type: carrier pigeon\n"),
-            "plant.e:2:21: error: expected 'pipes', 'files' or 'memory' as the communication type, not 'carrier "
-            "pigeon'");
-  EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nfollowing module: perhaps\n"),
-            "plant.e:3:19: error: expected yes or no, not 'perhaps'");
-  EXPECT_EQ(error_of("executable: a\nexecutable: b\ncommunication type: pipes\n"),
-            "plant.e:2:1: error: 'executable:' is given twice");
   EXPECT_EQ(error_of("executable:\ncommunication type: pipes\n"),
             "plant.e:1:12: error: expected the command line of the environmental program");
   EXPECT_EQ(error_of("communication type: pipes\n"),
             "plant.e:1: error: missing 'executable:' (the environmental program to run)");
-  EXPECT_EQ(error_of("executable: a\n"), "plant.e:1: error: missing 'communication type:' (pipes, files or memory)");
+}
+
+// What lpfg and cpfg pass over (lpfg's "Unrecognized command", the
+// communication library's "unknown directive", a value overwritten by a
+// later line) is a warning, and the run goes on.
+TEST(CommSpec, WhatTheReferenceProgramsPassOverIsAWarning) {
+  const CommSpec spec = parse_comm_spec(
+      "executable: a\n"
+      "turtle position %g\n"
+      "  turtle colour: %g\n"
+      "communication type: carrier pigeon\n"
+      "following module: perhaps\n"
+      "executable: b -e plant.e b.spec\n"
+      "verbose: on\n",
+      "plant.e");
+  EXPECT_EQ(spec.executable, "b -e plant.e b.spec");  // the later line wins
+  EXPECT_EQ(spec.executable_line, 6);
+  EXPECT_FALSE(spec.following_module);
+  EXPECT_TRUE(spec.verbose);
+  EXPECT_EQ(spec.position.count, 0);
+  ASSERT_EQ(spec.warnings.size(), 5u);
+  EXPECT_EQ(spec.warnings[0], "plant.e:2:1: warning: not a 'command: value' line; ignored, as lpfg and cpfg ignore it");
+  EXPECT_EQ(spec.warnings[1].rfind("plant.e:3:3: warning: unknown command 'turtle colour' ignored", 0), 0u)
+      << spec.warnings[1];
+  EXPECT_EQ(spec.warnings[2],
+            "plant.e:4:21: warning: unknown communication type 'carrier pigeon'; the communication library uses pipes");
+  EXPECT_EQ(spec.warnings[3], "plant.e:5:19: warning: expected yes or no (on or off), not 'perhaps'; left as it was");
+  EXPECT_EQ(spec.warnings[4], "plant.e:6:1: warning: 'executable:' is given again; this one replaces the first");
+  // No communication type at all is fine: lpfg does not read it.
+  EXPECT_TRUE(parse_comm_spec("executable: a\n", "plant.e").warnings.empty());
 }
 
 TEST(CommSpec, AMissingFileIsNamed) {

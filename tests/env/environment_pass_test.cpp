@@ -1,7 +1,8 @@
 // The environmental pass: queries at every communication module with the
 // turtle there (positions worked out by hand from the turtle's rules), the
-// field called once per pass after each step, answers written into E1, E2,
-// EA20 and cpfg's ?E, Environment()/NoEnvironment() and --clean-ea20.
+// field called once per pass before each step (lpfg's and cpfg's Derive
+// begin with it), answers written into E1, E2, EA20 and cpfg's ?E,
+// Environment()/NoEnvironment() and --clean-ea20.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,7 +112,7 @@ TEST(EnvironmentPass, QueriesCarryTheTurtleAndTheFollowingModule) {
   auto field = std::make_shared<EchoField>();
   Simulation s(write_model("queries", kLcModel), options_with(field));
   s.derivation().run();
-  ASSERT_EQ(field->steps, (std::vector<int>{0, 1}));  // after the axiom and after the step
+  ASSERT_EQ(field->steps, (std::vector<int>{0}));  // before the one step: none after it
   const std::vector<env::Query>& q = field->passes[0];  // the axiom as written
   ASSERT_EQ(q.size(), 3u);
 
@@ -181,14 +182,15 @@ TEST(EnvironmentPass, TheCommFileSetsTheCounts) {
   options.input_files.push_back(e_file);
   Simulation s(model, options);
   s.derivation().run();
-  ASSERT_EQ(field->passes.size(), 2u);
-  const env::Query& q = field->passes[1][0];
+  ASSERT_EQ(field->passes.size(), 1u);
+  const env::Query& q = field->passes[0][0];
   EXPECT_EQ(q.turtle.position_count, 2);
   EXPECT_EQ(q.turtle.heading_count, 0);
   EXPECT_TRUE(q.following.symbol.empty());  // "following module:" defaults to no
 }
 
-// The answer of the pass after step 1 is what step 2's production reads.
+// The answer of the pass before step 2 is what step 2's production reads,
+// and no pass follows the last step.
 TEST(EnvironmentPass, AnswersReachTheNextStep) {
   auto field = std::make_shared<StepField>();
   Simulation s(write_model("next-step", R"(#include <lpfgall.h>
@@ -200,12 +202,14 @@ E1(v): { produce E1(v) B(v); }
                options_with(field));
   s.derivation().run();
   // The axiom E1(0) answered E1(0); step 1: E1(0) B(0), answered E1(10);
-  // step 2: E1(10) B(10) B(0), answered E1(20).
-  EXPECT_EQ(string_of(s), "E1(20) B(10) B(0)");
-  EXPECT_EQ(field->steps, (std::vector<int>{0, 1, 2}));
+  // step 2: E1(10) B(10) B(0).
+  EXPECT_EQ(string_of(s), "E1(10) B(10) B(0)");
+  EXPECT_EQ(field->steps, (std::vector<int>{0, 1}));
 }
 
-TEST(EnvironmentPass, NoEnvironmentSkipsThePassAfterTheStep) {
+// The switch is read when the pass is due, before StartEach: what step k's
+// StartEach or EndEach sets decides the pass before step k + 1.
+TEST(EnvironmentPass, NoEnvironmentSkipsTheNextPass) {
   // StepNo() in step k's StartEach is k - 1, in its EndEach k.
   const char* switches[] = {
       "StartEach: { if (StepNo() == 1) NoEnvironment(); else Environment(); }",
@@ -215,7 +219,7 @@ TEST(EnvironmentPass, NoEnvironmentSkipsThePassAfterTheStep) {
   for (const char* control : switches) {
     auto field = std::make_shared<StepField>();
     Simulation s(write_model("no-environment-" + std::to_string(n++),
-                             std::string("#include <lpfgall.h>\nderivation length: 3;\n") + control +
+                             std::string("#include <lpfgall.h>\nderivation length: 4;\n") + control +
                                  "\naxiom: E1(0);\n"),
                  options_with(field));
     s.derivation().run();
@@ -233,7 +237,7 @@ TEST(EnvironmentPass, CpfgCommunicationModulesOfAnyLength) {
   auto field = std::make_shared<EchoField>();
   Simulation s(write_cpfg("cpfg", "F(2)+(90)?E(0,0)F(1)?E(9)?E"), options_with(field));
   s.derivation().run();
-  ASSERT_EQ(field->passes.size(), 2u);  // after the axiom and after the step
+  ASSERT_EQ(field->passes.size(), 1u);  // before the one step
   const std::vector<env::Query>& q = field->passes[0];
   ASSERT_EQ(q.size(), 3u);
   EXPECT_EQ(q[0].module.symbol, "?E");
@@ -276,7 +280,7 @@ module N(float, double);
 Pair pair() { Pair p; p.x2 = 7; p.y10 = 1.5f; return p; }
 float not_a_number() { return std::numeric_limits<float>::quiet_NaN(); }
 double minus_infinity() { return -std::numeric_limits<double>::infinity(); }
-derivation length: 0;
+derivation length: 1;
 axiom: E1(0) S(pair()) E1(0) N(not_a_number(), minus_infinity());
 )"),
                options_with(field));
@@ -305,30 +309,31 @@ class IndexField : public env::Field {
 };
 
 TEST(EnvironmentPass, AnAnswerForAMissingParameterIsAnError) {
-  const std::string model = write_model("missing-parameter", "#include <lpfgall.h>\naxiom: F(1) E1(0);\n");
+  const std::string model =
+      write_model("missing-parameter", "#include <lpfgall.h>\nderivation length: 1;\naxiom: F(1) E1(0);\n");
   try {
     Simulation s(model, options_with(std::make_shared<IndexField>(5)));
     s.derivation().run();
     FAIL() << "no error";
   } catch (const ModelError& e) {
     EXPECT_EQ(std::string(e.what()), model + ": error: the environment answered parameter 5 of module 1 (E1), "
-                                             "which has 1 parameter, during the environmental pass after step 0");
+                                             "which has 1 parameter, during the environmental pass before step 1");
   }
   // The last parameter it has is fine.
-  Simulation s(write_model("last-parameter", "#include <lpfgall.h>\naxiom: E2(0,0);\n"),
+  Simulation s(write_model("last-parameter", "#include <lpfgall.h>\nderivation length: 1;\naxiom: E2(0,0);\n"),
                options_with(std::make_shared<IndexField>(1)));
   s.derivation().run();
   EXPECT_EQ(string_of(s), "E2(0,1)");
 }
 
-// A communication module that its own interpretation rule replaces is still
-// sent, with the turtle where its interpretation starts, and answered in the
-// string; the E1 the rule produces is not sent. F(2) ends at (0,2,0), where
-// E1's interpretation starts; its F(1) and the next F(1) bring E2 to (0,4,0).
-TEST(EnvironmentPass, AModuleReplacedByItsInterpretationRuleIsSent) {
+// As in lpfg and cpfg, a communication module that an interpretation rule
+// replaces is not sent; the one the rule produces is sent, with the turtle
+// where the rule puts it, and its answer goes nowhere (it is not in the
+// string). F(2) ends at (0,2,0); the rule's F(1) brings its E1 to (0,3,0).
+TEST(EnvironmentPass, InterpretationRulesDecideWhatIsSent) {
   auto field = std::make_shared<EchoField>();
   Simulation s(write_model("interpreted", R"(#include <lpfgall.h>
-derivation length: 0;
+derivation length: 1;
 axiom: F(2) E1(5) F(1) E2(1,2);
 interpretation:
 E1(v) : { produce F(1) E1(v); }
@@ -338,17 +343,13 @@ E2(a,b) : { produce; }
   s.derivation().run();
   ASSERT_EQ(field->passes.size(), 1u);
   const std::vector<env::Query>& q = field->passes[0];
-  ASSERT_EQ(q.size(), 2u);
-  EXPECT_EQ(q[0].id, 1u);
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q[0].id, 1u);  // the place of the module the rule replaced
   EXPECT_EQ(q[0].module.symbol, "E1");
   EXPECT_EQ(q[0].module.parameters, std::vector<float>{5});
-  expect_vector(q[0].turtle.position, {0, 2, 0});
-  EXPECT_EQ(q[0].following.symbol, "F");
-  EXPECT_EQ(q[1].id, 3u);
-  EXPECT_EQ(q[1].module.symbol, "E2");
-  expect_vector(q[1].turtle.position, {0, 4, 0});
-  EXPECT_TRUE(q[1].following.symbol.empty());
-  EXPECT_EQ(string_of(s), "F(2) E1(0) F(1) E2(0,4)");
+  expect_vector(q[0].turtle.position, {0, 3, 0});
+  EXPECT_TRUE(q[0].following.symbol.empty());
+  EXPECT_EQ(string_of(s), "F(2) E1(5) F(1) E2(1,2)");
 }
 
 }  // namespace

@@ -55,15 +55,17 @@ std::string derive_with_environment(const std::string& model, const std::string&
 // H1 = (0.866,0.5), a ?E reached with frame A (H = H0) has children at +H0
 // (frame A) and +H1 (frame B); one reached with frame B has them at +H1
 // (frame B) and +H0 (frame A).
+// The program answers in a pass before each step, so the ?E a step makes
+// are 0 in the string it leaves:
 //   step 1: ?E at (0,1) A and (0.866,0.5) B: apart, all stay 0.
 //   step 2: (0,2) and (0.866,1.5) from the first; (1.732,1) and (0.866,1.5)
-//           from the second: the two at (0.866,1.5) collide and are set to 1.
+//           from the second: the pass before step 3 finds the two at
+//           (0.866,1.5) and sets them to 1.
 //   step 3: the ?E(1) do not grow; (0,2) A gives (0,3), (0.866,2.5);
 //           (1.732,1) B gives (2.598,1.5), (1.732,2): no collision.
 //   step 4: (0,3) A: (0,4), (0.866,3.5); (0.866,2.5) B: (1.732,3), (0.866,3.5);
 //           (2.598,1.5) B: (3.464,2), (2.598,2.5); (1.732,2) A: (1.732,3),
-//           (2.598,2.5): all but (0,4) and (3.464,2) collide - the fourth row
-//           of Pascal's triangle taken modulo 2.
+//           (2.598,2.5), 0 until a fifth pass.
 TEST(ExternalProgram, DelayedAnswerDrawsASierpinskiTriangle) {
   const Folder f{make_temp_dir("env-sierpinski")};
   const std::string model = f.file("sierpinski.l",
@@ -76,27 +78,28 @@ TEST(ExternalProgram, DelayedAnswerDrawsASierpinskiTriangle) {
     return std::string("[F?E(") + a + ")]-(60)/(180)[F?E(" + b + ")]";
   };
   EXPECT_EQ(derive_with_environment(model, e_file, 1), pair("0", "0"));
-  const std::string step2 = "[F" + pair("0", "1") + "]-(60)/(180)[F" + pair("0", "1") + "]";
+  const std::string step2 = "[F" + pair("0", "0") + "]-(60)/(180)[F" + pair("0", "0") + "]";
   EXPECT_EQ(derive_with_environment(model, e_file, 2), step2);
   const std::string grown3 = "[F" + pair("0", "0") + "]-(60)/(180)[F?E(1)]";
   EXPECT_EQ(derive_with_environment(model, e_file, 3), "[F" + grown3 + "]-(60)/(180)[F" + grown3 + "]");
   const std::string grown4 =
-      "[F[F" + pair("0", "1") + "]-(60)/(180)[F" + pair("1", "1") + "]]-(60)/(180)[F?E(1)]";
+      "[F[F" + pair("0", "0") + "]-(60)/(180)[F" + pair("0", "0") + "]]-(60)/(180)[F?E(1)]";
   EXPECT_EQ(derive_with_environment(model, e_file, 4), "[F" + grown4 + "]-(60)/(180)[F" + grown4 + "]");
 }
 
 // EnviroManual 4.3.1: 1 where the turtle is farther from the origin than the
 // parameter, else 0. The three ?E are at distances 0, 1 and 2: the pass
-// after the axiom compares them with 0.5, 2 and 1.5; the pass after step 1
+// before step 1 compares them with 0.5, 2 and 1.5; the pass before step 2
 // (no productions) with those answers, 0, 0 and 1.
 TEST(ExternalProgram, ImmediateAnswerThroughCSMainLoop) {
   const Folder f{make_temp_dir("env-immediate")};
   const std::string model =
-      f.file("distance.l", "Lsystem: 1\nderivation length: 1\nAxiom: ?E(0.5)F(1)?E(2)F(1)?E(1.5)\nendlsystem\n");
+      f.file("distance.l", "Lsystem: 1\nderivation length: 2\nAxiom: ?E(0.5)F(1)?E(2)F(1)?E(1.5)\nendlsystem\n");
   const std::string e_file = f.file("distance.e", std::string("executable: ") + SYLVA_TEST_IMMEDIATE_ANSWER +
                                                       "\ncommunication type: pipes\nturtle position: %g %g %g\n");
-  EXPECT_EQ(derive_with_environment(model, e_file, 0), "?E(0)F(1)?E(0)F(1)?E(1)");
-  EXPECT_EQ(derive_with_environment(model, e_file, 1), "?E(0)F(1)?E(1)F(1)?E(1)");
+  EXPECT_EQ(derive_with_environment(model, e_file, 0), "?E(0.5)F(1)?E(2)F(1)?E(1.5)");  // no step, no pass
+  EXPECT_EQ(derive_with_environment(model, e_file, 1), "?E(0)F(1)?E(0)F(1)?E(1)");
+  EXPECT_EQ(derive_with_environment(model, e_file, 2), "?E(0)F(1)?E(1)F(1)?E(1)");
 }
 
 // ---- failures, straight through the Field ----------------------------------------
@@ -107,7 +110,7 @@ env::CommSpec spec_for(const Folder& f, const std::string& executable) {
 
 std::string failure(const env::CommSpec& spec, double timeout = 5) {
   try {
-    std::unique_ptr<env::Field> field = env::make_field(spec, env::FieldOptions{timeout});
+    std::unique_ptr<env::Field> field = env::make_field(spec, [&] { env::FieldOptions o; o.timeout_seconds = timeout; return o; }());
     env::Query q;
     q.id = 4;
     q.module = env::ModuleRecord{"?E", {1}};
@@ -130,7 +133,7 @@ TEST(ExternalProgram, AProgramThatDiesIsNamed) {
   f.script("dies", ready_then("exit 3\n"));
   EXPECT_EQ(failure(spec_for(f, "./dies")),
             f.dir + "/plant.e:1: error: environmental program './dies' exited with status 3 during the "
-                    "environmental pass after step 1");
+                    "environmental pass before step 2");
 }
 
 TEST(ExternalProgram, AProgramThatHangsIsStopped) {
@@ -139,7 +142,7 @@ TEST(ExternalProgram, AProgramThatHangsIsStopped) {
   const auto start = std::chrono::steady_clock::now();
   EXPECT_EQ(failure(spec_for(f, "./hangs"), 0.5),
             f.dir + "/plant.e:1: error: environmental program './hangs' did not answer within 0.5 seconds during "
-                    "the environmental pass after step 1 (it was stopped; --env-timeout sets the limit)");
+                    "the environmental pass before step 2 (it was stopped; --env-timeout sets the limit)");
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 }
 
@@ -148,11 +151,11 @@ TEST(ExternalProgram, GarbageIsRefused) {
   f.script("garbage", ready_then("echo 'hello world'\necho end\ncat > /dev/null\n"));
   EXPECT_EQ(failure(spec_for(f, "./garbage")),
             f.dir + "/plant.e:1: error: environmental program './garbage' answered 'hello world' during the "
-                    "environmental pass after step 1; expected 'ID INDEX VALUE' (INDEX from 0 to 19) or 'end'");
+                    "environmental pass before step 2; expected 'ID INDEX VALUE' (INDEX from 0 to 19) or 'end'");
   f.script("stranger", ready_then("echo '99 0 1'\necho end\ncat > /dev/null\n"));
   EXPECT_EQ(failure(spec_for(f, "./stranger")),
             f.dir + "/plant.e:1: error: environmental program './stranger' answered module 99, which was not "
-                    "asked about, during the environmental pass after step 1");
+                    "asked about, during the environmental pass before step 2");
   f.script("chatty", "echo hello\ncat > /dev/null\n");
   EXPECT_EQ(failure(spec_for(f, "./chatty")),
             f.dir + "/plant.e:1: error: environmental program './chatty' sent 'hello' instead of 'ready' (is it "
@@ -176,7 +179,7 @@ TEST(ExternalProgram, AnAnswerForAMissingParameterIsNamed) {
                                 "  query*) set -- $line; echo \"$2 1 7\" ;;\n  end) echo end ;;\nesac; done\n"));
   EXPECT_EQ(failure(spec_for(f, "./beyond")),
             f.dir + "/plant.e:1: error: environmental program './beyond' answered parameter 1 of module 4 (?E), "
-                    "which has 1 parameter, during the environmental pass after step 1");
+                    "which has 1 parameter, during the environmental pass before step 2");
 }
 
 // A program that answers every pass at once; `timeout` would overflow the
@@ -219,10 +222,10 @@ A(x) : {
   Simulation s(model, options);
   s.derivation().run();
   const std::string text = io::format_string(s.derivation().string(), s.types());
-  EXPECT_EQ(text.substr(0, 15), "F(1) E1(3) F(1)");  // answered in the pass after step 3
+  EXPECT_EQ(text.substr(0, 15), "F(1) E1(2) F(1)");  // answered in the pass before step 3
   std::ifstream in(log);
   const std::string begins((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(begins, "begin 0\nbegin 1\nbegin 2\nbegin 3\n");
+  EXPECT_EQ(begins, "begin 0\nbegin 1\nbegin 2\n");
 }
 
 TEST(ExternalProgram, ThePassIsSentAsDocumented) {

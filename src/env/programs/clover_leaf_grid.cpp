@@ -3,73 +3,65 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <utility>
 
 namespace sylva::env {
 
-namespace {
-
-// Voxels [first, last] along one axis whose centres lie in [from, to]
-// (world coordinates); empty when first > last.
-std::pair<int, int> voxels_between(double from, double to, double low, double voxel, int count) {
-  double first = std::ceil((from - low) / voxel - 0.5);
-  double last = std::floor((to - low) / voxel - 0.5);
-  first = std::clamp(first, 0.0, static_cast<double>(count));
-  last = std::clamp(last, -1.0, static_cast<double>(count - 1));
-  return {static_cast<int>(first), static_cast<int>(last)};
-}
-
-}  // namespace
-
 LeafGrid::LeafGrid(const CloverParameters& p)
-    : low_(p.position),
-      voxel_{p.range[0] / p.size[0], p.range[1] / p.size[1]},
-      size_(p.size),
-      transmittance_(p.transmittance),
-      initial_(static_cast<std::size_t>(p.size[0]) * p.size[1], 1.0f),
-      leaves_(initial_.size(), 0) {
-  if (!p.image) return;
-  // The image is stretched over the grid, its top row at the far (high v)
-  // edge as it appears when the ground is seen from above; each voxel takes
-  // the pixel under its centre.
-  const GreenChannel& image = *p.image;
-  for (int j = 0; j < size_[1]; ++j) {
-    int row = image.height - 1 - static_cast<int>((j + 0.5) * image.height / size_[1]);
-    for (int i = 0; i < size_[0]; ++i) {
-      int column = static_cast<int>((i + 0.5) * image.width / size_[0]);
-      initial_[index(i, j)] = image.at(column, row);
-    }
+    : position_(p.position), range_(p.range), size_(p.size), cells_(load_clover_ground(p.image, p.size)) {
+  powers_[0] = 1.0f;
+  for (std::size_t n = 1; n < powers_.size(); ++n) powers_[n] = p.transmittance * powers_[n - 1];
+}
+
+std::array<long long, 2> LeafGrid::node(float u, float v) const {
+  const float point[2] = {u, v};
+  std::array<long long, 2> node{};
+  for (int c = 0; c < 2; ++c) {
+    const double cell = std::floor((point[c] - position_[c]) / range_[c] * static_cast<float>(size_[c]));
+    // Far outside (or NaN): a cell number far off the grid.
+    node[c] = std::isfinite(cell) ? static_cast<long long>(std::clamp(cell, -1e15, 1e15)) : -(1LL << 50);
   }
+  return node;
 }
 
-void LeafGrid::change_leaf(double u, double v, double area, int count) {
-  if (!(area > 0)) return;
-  double radius = std::sqrt(area / std::numbers::pi);
-  auto [j_first, j_last] = voxels_between(v - radius, v + radius, low_[1], voxel_[1], size_[1]);
-  for (int j = j_first; j <= j_last; ++j) {
-    // The disk's chord along this row of voxel centres.
-    double dv = low_[1] + (j + 0.5) * voxel_[1] - v;
-    double half = std::sqrt(std::max(0.0, radius * radius - dv * dv));
-    auto [i_first, i_last] = voxels_between(u - half, u + half, low_[0], voxel_[0], size_[0]);
-    for (int i = i_first; i <= i_last; ++i) {
-      std::uint32_t& n = leaves_[index(i, j)];
-      if (count > 0) {
-        ++n;
-      } else if (n > 0) {
-        --n;
-      }
-    }
+std::optional<std::size_t> LeafGrid::cell_at(float u, float v) const {
+  const std::array<long long, 2> n = node(u, v);
+  if (n[0] < 0 || n[0] >= size_[0] || n[1] < 0 || n[1] >= size_[1]) return std::nullopt;
+  return static_cast<std::size_t>(n[1]) * size_[0] + n[0];
+}
+
+float LeafGrid::light(std::size_t cell) const {
+  return static_cast<float>(static_cast<float>(cells_[cell].light) / 255.0 * powers_[cells_[cell].objects]);
+}
+
+float LeafGrid::second_value(std::size_t cell) const {
+  return static_cast<float>(static_cast<float>(cells_[cell].ratio) / 128.0);
+}
+
+void LeafGrid::change_leaf(float u, float v, float area, int count) {
+  if (area < 0.0000001f) return;
+  const float radius = static_cast<float>(std::sqrt(area / std::numbers::pi));
+  const std::array<long long, 2> centre = node(u, v);
+  std::array<long long, 2> reach{};
+  for (int c = 0; c < 2; ++c) {
+    const float cells = radius / range_[c] * static_cast<float>(size_[c]) + 1;
+    reach[c] = std::isfinite(cells) ? static_cast<long long>(std::min(cells, 1e15f)) : 1LL << 50;
   }
+  // Only the offsets that land on the grid are visited; the others would
+  // change nothing.
+  const long long y_from = std::max(-reach[1], -centre[1]), y_to = std::min(reach[1], size_[1] - centre[1]);
+  const long long x_from = std::max(-reach[0], -centre[0]), x_to = std::min(reach[0], size_[0] - centre[0]);
+  const float rx2 = static_cast<float>(reach[0] * reach[0]), ry2 = static_cast<float>(reach[1] * reach[1]);
+  for (long long y = y_from; y < y_to; ++y)
+    for (long long x = x_from; x < x_to; ++x) {
+      if (static_cast<float>(x * x) / rx2 + static_cast<float>(y * y) / ry2 > 1) continue;
+      CloverCell& cell = cells_[static_cast<std::size_t>(centre[1] + y) * size_[0] + static_cast<std::size_t>(centre[0] + x)];
+      if (count > 0 && cell.objects < 255) ++cell.objects;
+      else if (count < 0 && cell.objects > 0) --cell.objects;
+    }
 }
 
-double LeafGrid::light_at(double u, double v) const {
-  double fi = std::floor((u - low_[0]) / voxel_[0]);
-  double fj = std::floor((v - low_[1]) / voxel_[1]);
-  if (!(fi >= 0 && fi < size_[0] && fj >= 0 && fj < size_[1])) return 0;
-  std::size_t k = index(static_cast<int>(fi), static_cast<int>(fj));
-  return initial_[k] * std::pow(transmittance_, static_cast<double>(leaves_[k]));
+void LeafGrid::remove_all_leaves() {
+  for (CloverCell& cell : cells_) cell.objects = 0;
 }
-
-void LeafGrid::remove_all_leaves() { std::fill(leaves_.begin(), leaves_.end(), 0); }
 
 }  // namespace sylva::env

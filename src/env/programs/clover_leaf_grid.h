@@ -1,11 +1,23 @@
-// The ground of clover: a regular 2D grid whose voxels hold the light coming
-// from above (1, or the input image's green channel) and the number of leaves
-// over them (EnviroManual 3.2.1).
+// The grid of clover (ENVIRO/clover): cells over the ground with the light
+// from above and the leaves over them, computed as the real clover computes
+// them, in float where it uses float.
+//  - The cell of a ground point (u, v): floor((u - x0) / range * size) along
+//    each axis; a point outside the grid has no cell.
+//  - A leaf of area a at (u, v): the cells (cx + i, cy + j) of the ellipse
+//    i^2/rx^2 + j^2/ry^2 <= 1, -rx <= i < rx, -ry <= j < ry, around the
+//    point's cell (cx, cy), where r = sqrt(a / pi) and rx = (int)(r / range *
+//    size + 1) (the same for y). Each cell counts at most 255 leaves, and
+//    removing never goes below 0. An area below 1e-7 changes nothing.
+//  - The light of a cell: light / 255 * t^n for its n leaves, t^n taken from
+//    a table of float powers; 0 outside the grid. The second value:
+//    ratio / 128.
 #pragma once
 
-#include <cstdint>
+#include <array>
+#include <optional>
 #include <vector>
 
+#include "env/programs/clover_image.h"
 #include "env/programs/clover_parameters.h"
 
 namespace sylva::env {
@@ -14,26 +26,24 @@ class LeafGrid {
  public:
   explicit LeafGrid(const CloverParameters& parameters);
 
-  // Adds (count +1) or removes (count -1) a leaf: a disk of `area` centred at
-  // ground point (u, v). It covers the voxels whose centres lie in the disk.
-  // A voxel's count never goes below 0.
-  void change_leaf(double u, double v, double area, int count);
+  // Adds (count +1) or removes (count -1) a leaf of `area` at ground point (u, v).
+  void change_leaf(float u, float v, float area, int count);
 
-  // The light reaching ground point (u, v): the voxel's initial intensity
-  // times t^n for the n leaves over it; 0 outside the grid.
-  double light_at(double u, double v) const;
+  // The cell under ground point (u, v), or nullopt outside the grid.
+  std::optional<std::size_t> cell_at(float u, float v) const;
+  float light(std::size_t cell) const;
+  float second_value(std::size_t cell) const;
 
   void remove_all_leaves();
 
  private:
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * size_[0] + i; }
+  std::array<long long, 2> node(float u, float v) const;
 
-  std::array<double, 2> low_{};
-  std::array<double, 2> voxel_{};  // world size of one voxel
-  std::array<int, 2> size_{};
-  double transmittance_ = 0;
-  std::vector<float> initial_;
-  std::vector<std::uint32_t> leaves_;
+  std::array<float, 2> position_;
+  std::array<float, 2> range_;
+  std::array<int, 2> size_;
+  std::array<float, 256> powers_{};  // transmittance^n
+  std::vector<CloverCell> cells_;
 };
 
 }  // namespace sylva::env

@@ -1,30 +1,33 @@
-// honda81 (EnviroManual 3.1.1): collisions between disks of one fixed radius
-// that differ only in vigor, in 2D or, with "3d case: on", between spheres.
+// honda81 (EnviroManual 3.1.1; the Virtual Laboratory's ENVIRO/honda81):
+// collisions between the ends of segments, each with a vigor, in 2D or 3D.
 //
-// Parameter file:   radius: r      (required, > 0)
-//                   3d case: on|off (default off)
-//                   verbose: on|off (default off)
-// Query:  ?E(vigor) or ?E(vigor, group), at the turtle position (x y, or
-//         x y z in 3D); the group defaults to 0.
-// Answer: p1 = 0 if the disk collides with a disk of the same group with a
-//         higher vigor, 1 otherwise; p2 unchanged. Modules without
-//         parameters take no part.
+// Specification file (read as honda81 reads it, vlab_spec_file.h):
+//   radius: r        the distance within which two objects collide (default 0)
+//   3d case: on      compare x y z; otherwise x and z (the default)
+//   verbose: on
+// Query:  ?E(vigor) or ?E(vigor, group) (E1, E2, EA20 in lpfg) at the turtle
+//         position, which the .e file must send with three values.
+// Answer: p1 = 0 when another object of the same group whose vigor is equal
+//         or higher lies at a distance of r or less, 1 otherwise. Only p1 is
+//         answered (so lpfg, which wants two values for an E2, drops it).
 //
-// Every query of a pass is stored, then each object is compared with the
-// other objects of its group (manual: "the distance from a given object to
-// other objects having a higher or equal vigor"). Two disks of radius r
-// collide when their centres are closer than 2r (touching is no collision).
-// Equal vigor answers 1 for both ("1 (equal or higher vigor)"), so an object
-// of vigor 1, the highest, is never stopped and stops every weaker object it
-// touches. Objects are compared within one pass only: a model keeps an object
-// in the environment by keeping its communication module in the string.
+// The rule is the real program's, which the manual words loosely:
+//  - Distances are compared with <=, squared, in float: touching collides.
+//  - Equal vigor collides: two objects at one place stop each other, and a
+//    set of objects of one vigor all stop where they crowd.
+//  - The group is the second parameter truncated to an integer.
+//  - In 2D the program compares x and z, not x and y: the real program reads
+//    the position's third value as its second coordinate.
+//  - A query without parameters, or without three position values, gets no
+//    answer and takes no part (the real program says so and skips it).
+// Objects are compared within one pass only.
 #include <cmath>
 #include <iostream>
 
 #include "env/programs/grid_uniform.h"
 #include "env/programs/program_inputs.h"
 #include "env/programs/programs.h"
-#include "env/programs/radius_parameters.h"
+#include "env/programs/vlab_spec_file.h"
 
 namespace sylva::env {
 namespace {
@@ -33,56 +36,104 @@ using collision::Point3;
 using collision::UniformGrid;
 
 constexpr const char* kProgram = "honda81";
+constexpr const char* kValueDelimiters = "x,; \t:\n";
+
+struct Honda81Settings {
+  float radius = 0;
+  bool three_d = false;
+  bool verbose = false;
+};
+
+Honda81Settings read_honda81_settings(const std::filesystem::path& path) {
+  Honda81Settings settings;
+  read_vlab_spec_file(path, kProgram, {"verbose", "radius", "3d case"}, [&](std::size_t keyword, SpecLineTokens& line) {
+    switch (keyword) {
+      case 0: line.next_switch(kValueDelimiters, {"on"}, {"off"}, true, settings.verbose); break;
+      case 1:
+        if (std::optional<double> radius = line.next_number(kValueDelimiters)) settings.radius = static_cast<float>(*radius);
+        break;
+      case 2: line.next_switch(kValueDelimiters, {"on"}, {"off"}, true, settings.three_d); break;
+    }
+  });
+  return settings;
+}
 
 class Honda81 : public Field {
  public:
-  Honda81(ProgramInvocation invocation, RadiusParameters parameters)
-      : invocation_(std::move(invocation)), parameters_(parameters) {}
+  explicit Honda81(Honda81Settings settings) : settings_(settings) {}
 
   void answer(std::span<const Query> queries, std::span<Answer> answers, int step) override {
-    // The objects: queries with at least the vigor parameter.
-    std::vector<std::size_t> query_of = queries_with_parameters(queries);
+    std::vector<std::size_t> query_of;
+    std::size_t without_parameters = 0, without_position = 0;
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      if (queries[q].turtle.position_count < 3) ++without_position;
+      else if (queries[q].module.parameters.empty()) ++without_parameters;
+      else query_of.push_back(q);
+    }
+    if (without_position > 0)
+      warn_once(warned_position_, std::to_string(without_position) +
+                                      " communication modules skipped: the .e file does not send the turtle "
+                                      "position with three values ('turtle position: %f %f %f')");
+    if (without_parameters > 0)
+      warn_once(warned_parameters_, std::to_string(without_parameters) +
+                                        " communication modules without parameters skipped (the vigor is the first)");
     if (query_of.empty()) return;
-    require_turtle_position(invocation_, kProgram, queries[query_of[0]], parameters_.three_d);
 
-    std::size_t count = query_of.size();
+    const std::size_t count = query_of.size();
     std::vector<Point3> centres(count);
-    std::vector<float> vigor(count), group(count);
+    std::vector<float> vigor(count);
+    std::vector<int> group(count);
     for (std::size_t i = 0; i < count; ++i) {
       const Query& query = queries[query_of[i]];
-      centres[i] = position_in(query, parameters_.three_d);
+      const std::array<float, 3>& p = query.turtle.position;
+      centres[i] = settings_.three_d ? Point3{p[0], p[1], p[2]} : Point3{p[0], p[2], 0.0f};
       vigor[i] = query.module.parameters[0];
-      group[i] = query.module.parameters.size() > 1 ? query.module.parameters[1] : 0.0f;
+      group[i] = query.module.parameters.size() > 1 ? static_cast<int>(query.module.parameters[1]) : 0;
     }
-    std::vector<float> points(count, 0.0f);  // the grid holds centres only
-    float reach = 2 * parameters_.radius;
-    UniformGrid grid(centres, points, parameters_.three_d ? 3 : 2, reach);
+    const float radius = std::fabs(settings_.radius);
+    const float radius_squared = settings_.radius * settings_.radius;
+    std::vector<float> no_radii(count, 0.0f);  // the grid holds centres only
+    UniformGrid grid(centres, no_radii, settings_.three_d ? 3 : 2, radius);
+    // The grid only narrows the search; a margin keeps a neighbour at exactly
+    // the radius inside the cells visited despite rounding.
+    const float reach = radius * 1.001f + 1e-6f;
 
-    float reach_squared = reach * reach;
     std::size_t stopped = 0;
     for (std::size_t i = 0; i < count; ++i) {
-      bool beaten = grid.visit_near(centres[i], reach, [&](std::size_t j) {
-        if (vigor[j] <= vigor[i] || group[j] != group[i]) return false;
-        float dx = centres[j][0] - centres[i][0], dy = centres[j][1] - centres[i][1], dz = centres[j][2] - centres[i][2];
-        return dx * dx + dy * dy + dz * dz < reach_squared;
+      const bool beaten = grid.visit_near(centres[i], reach, [&](std::size_t j) {
+        if (j == i || group[j] != group[i] || vigor[i] > vigor[j]) return false;
+        const float dx = centres[i][0] - centres[j][0], dy = centres[i][1] - centres[j][1];
+        float distance_squared = dx * dx + dy * dy;
+        if (settings_.three_d) {
+          const float dz = centres[i][2] - centres[j][2];
+          distance_squared += dz * dz;
+        }
+        return distance_squared <= radius_squared;
       });
       answers[query_of[i]].assign(0, beaten ? 0.0f : 1.0f);
       stopped += beaten;
     }
-    if (parameters_.verbose)
-      std::cerr << kProgram << ": step " << step << ": " << count << " objects, " << stopped << " stopped\n";
+    if (settings_.verbose)
+      std::cerr << kProgram << ": pass before step " << step + 1 << ": " << count << " objects, " << stopped
+                << " stopped\n";
   }
 
  private:
-  ProgramInvocation invocation_;
-  RadiusParameters parameters_;
+  static void warn_once(bool& warned, const std::string& message) {
+    if (warned) return;
+    warned = true;
+    std::cerr << "warning: " << kProgram << ": " << message << "\n";
+  }
+
+  Honda81Settings settings_;
+  bool warned_position_ = false;
+  bool warned_parameters_ = false;
 };
 
 }  // namespace
 
 std::unique_ptr<Field> make_honda81(const ProgramInvocation& invocation) {
-  std::filesystem::path path = parameter_file_path(invocation, kProgram, ParameterDialect::collision);
-  return std::make_unique<Honda81>(invocation, read_radius_parameters(path, kProgram, "radius: 0.5"));
+  return std::make_unique<Honda81>(read_honda81_settings(vlab_spec_file_path(invocation, kProgram)));
 }
 
 }  // namespace sylva::env

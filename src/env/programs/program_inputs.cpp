@@ -23,6 +23,19 @@ std::filesystem::path parameter_file_path(const ProgramInvocation& invocation, c
   return invocation.resolve(files[0]);
 }
 
+std::filesystem::path vlab_spec_file_path(const ProgramInvocation& invocation, const std::string& program) {
+  const std::vector<std::string>& words = invocation.arguments;
+  std::size_t at = 0;
+  while (at + 1 < words.size() && words[at].size() > 1 && words[at][0] == '-' &&
+         (words[at][1] == 'e' || words[at][1] == 'k' || words[at][1] == 'h'))
+    at += 2;
+  if (at >= words.size())
+    throw ModelError(SourceLocation{invocation.e_file, invocation.e_file_line, 0},
+                     program + " needs its specification file: 'executable: " + program +
+                         " [-e commfile.e] specfile'");
+  return invocation.resolve(words[at]);
+}
+
 void require_turtle_values(const ProgramInvocation& invocation, const std::string& program, const std::string& field,
                            int sent, int count) {
   if (sent >= count) return;

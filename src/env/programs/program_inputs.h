@@ -23,6 +23,14 @@ namespace sylva::env {
 std::filesystem::path parameter_file_path(const ProgramInvocation& invocation, const std::string& program,
                                           ParameterDialect dialect);
 
+// The specification file of a program built on the Virtual Laboratory's
+// communication library (honda81, clover), as that library leaves it: the
+// switches -e, -ext, -k and -h each take the next word; the first word after
+// them is the file, resolved against the .e file's folder; later words are
+// ignored, as the real programs ignore them. No word at all is an error at
+// the executable: line (the real program prints its usage and exits).
+std::filesystem::path vlab_spec_file_path(const ProgramInvocation& invocation, const std::string& program);
+
 // The collision programs' check, made once per pass on the first query:
 // throws an error pointing at the executable: line unless the .e file sends
 // at least `count` values of `field` ("turtle position", ...).

@@ -4,12 +4,18 @@
 // description (EnviroManual 3.2.1, 3.2.2) directly.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <cstdlib>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "api/simulation.h"
+#include "env/comm_spec.h"
+#include "env/environment.h"
 #include "test_support.h"
 
 namespace sylva::test::light {
@@ -99,12 +105,13 @@ TEST(LightExamples, TreesFirstStageLightAndResponse) {
   ASSERT_GT(r, 0.95);
   ASSERT_LT(r, 0.99);
 
+  // After step 30 the clusters' ?E hold what the step produced, their
+  // radius vig*0.5: the pass that answers them comes before step 31.
   std::vector<Module> s30 = parse(run_example("light-competition-trees", "light-competition-trees.l", "light.e", 30));
-  std::vector<double> light;
+  std::vector<double> radii;
   for (const Module& m : s30)
-    if (m.name == "?E") light.push_back(m.params.at(0));
-  ASSERT_EQ(light.size(), 2u);
-  for (double x : light) EXPECT_NEAR(x, r, 2e-5);
+    if (m.name == "?E") radii.push_back(m.params.at(0));
+  EXPECT_EQ(radii, (std::vector<double>{0.5, 0.5}));
 
   // Step 31: r*LP - LM = 8r - 2 exceeds PB = 0.8, so each apex branches (p6)
   // and each leaf keeps producing 8r - 2 (p4).
@@ -122,92 +129,127 @@ TEST(LightExamples, TreesFirstStageLightAndResponse) {
 }
 
 // ---------------------------------------------------------------------------
-// clover-field: a clonal plant on a 60 x 60 field of patches (clover.par: grid
-// 600 x 600 from (-55.05, -55.05), opaque leaves, patches.png: 12 x 12 pixels
-// of 5 x 5 units). Every apex A is followed by ?E(x,0) whose x is the light
-// there: the patch's light, or 0 under a leaf. The leaves the environment
-// holds are the ramets @o(diameter,age) in the string.
+// clover-field: a clonal plant on a 60 x 60 field of patches (clover.par: a
+// grid of 600 x 600 cells from (-55.05, -55.05), transmittance 0 (read as
+// 0.0001), patches.png: 12 x 12 pixels, green 255 bottom left, 153 top
+// right, 38 elsewhere). The built-in clover answers through the recorder
+// below; every pass's light answers are compared with clover's rules worked
+// here: the cell floor((p - p0) / 60 * 600), leaves counted on the cells of
+// their ellipse, light green / 255 * 0.0001^leaves, all in float, values
+// carried as cpfg and clover print them ("%g").
 
-constexpr double kLow = -55.05, kVoxel = 0.1;
-constexpr int kVoxels = 600;
-
-// The light of the patch under the centre of a voxel (pixel under the centre;
-// the top image row at high y).
-double patch_light(int i, int j) {
-  int column = static_cast<int>((i + 0.5) * 12 / kVoxels);
-  int row = 11 - static_cast<int>((j + 0.5) * 12 / kVoxels);
-  if (column >= 8 && row <= 3) return 153 / 255.0;  // patch II
-  if (column <= 4 && row >= 7) return 1.0;          // patch I
-  return 38 / 255.0;                                // patch III
-}
-
-struct Disk {
-  double x, y, radius;
-};
-
-struct Apex {
-  double x, y, light;
-};
-
-// Walks the string with a turtle in the plane (cpfg: heading +y at first, +
-// turns left), collecting the ramets and the apices' answers.
-void walk(const std::vector<Module>& s, std::vector<Disk>& leaves, std::vector<Apex>& apices) {
-  struct State {
-    double x = 0, y = 0, heading = 90;
+// Records each pass of the field it wraps.
+class Recorder : public env::Field {
+ public:
+  explicit Recorder(std::unique_ptr<env::Field> inner) : inner_(std::move(inner)) {}
+  void answer(std::span<const env::Query> queries, std::span<env::Answer> answers, int step) override {
+    inner_->answer(queries, answers, step);
+    passes.push_back({{queries.begin(), queries.end()}, {answers.begin(), answers.end()}});
+  }
+  struct Pass {
+    std::vector<env::Query> queries;
+    std::vector<env::Answer> answers;
   };
-  std::vector<State> stack;
-  State t;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const Module& m = s[k];
-    if (m.name == "F" || m.name == "f") {
-      double a = t.heading * std::numbers::pi / 180;
-      t.x += m.params.at(0) * std::cos(a);
-      t.y += m.params.at(0) * std::sin(a);
-    } else if (m.name == "+") {
-      t.heading += m.params.at(0);
-    } else if (m.name == "-") {
-      t.heading -= m.params.at(0);
-    } else if (m.name == "[") {
-      stack.push_back(t);
-    } else if (m.name == "]") {
-      t = stack.back();
-      stack.pop_back();
-    } else if (m.name == "@o") {
-      leaves.push_back({t.x, t.y, m.params.at(0) / 2});
-    } else if (m.name == "A" && k + 1 < s.size() && s[k + 1].name == "?E") {
-      apices.push_back({t.x, t.y, s[k + 1].params.at(0)});
-    }
-  }
+  std::vector<Pass> passes;
+
+ private:
+  std::unique_ptr<env::Field> inner_;
+};
+
+float as_printed(float value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+  return std::strtof(text, nullptr);
 }
 
-double expected_light(double x, double y, const std::vector<Disk>& leaves) {
-  double fi = std::floor((x - kLow) / kVoxel), fj = std::floor((y - kLow) / kVoxel);
-  if (fi < 0 || fi >= kVoxels || fj < 0 || fj >= kVoxels) return 0;
-  int i = static_cast<int>(fi), j = static_cast<int>(fj);
-  double cx = kLow + (i + 0.5) * kVoxel, cy = kLow + (j + 0.5) * kVoxel;
-  for (const Disk& d : leaves)
-    if ((cx - d.x) * (cx - d.x) + (cy - d.y) * (cy - d.y) <= d.radius * d.radius) return 0;  // opaque
-  return patch_light(i, j);
-}
+class CloverFieldRule {
+ public:
+  CloverFieldRule() : leaves_(kCells * kCells, 0) {}
 
-TEST(LightExamples, CloverFieldApicesSeeThePatchLightUnlessUnderALeaf) {
-  // The first apex is answered by the pass after the axiom.
-  std::vector<Module> s0 = parse(run_example("clover-field", "clover-field.l", "clover-field.e", 0));
-  ASSERT_GE(s0.size(), 3u);
-  EXPECT_NEAR(s0.back().params.at(0), 153 / 255.0, 1e-5);  // the origin lies in patch II
-
-  int apices_seen = 0;
-  for (int steps : {5, 12, 25, 40}) {
-    std::vector<Disk> leaves;
-    std::vector<Apex> apices;
-    walk(parse(run_example("clover-field", "clover-field.l", "clover-field.e", steps)), leaves, apices);
-    for (const Apex& a : apices) {
-      double expected = expected_light(a.x, a.y, leaves);
-      EXPECT_NEAR(a.light, expected, 1e-5) << "step " << steps << ", apex at " << a.x << " " << a.y;
-    }
-    apices_seen += static_cast<int>(apices.size());
+  void leaf(float x, float y, float area, int change) {
+    if (area < 1e-7f) return;
+    const float radius = static_cast<float>(std::sqrt(area / std::numbers::pi));
+    const int reach = static_cast<int>(radius / kRange * static_cast<float>(kCells) + 1);
+    const int cx = cell(x), cy = cell(y);
+    for (int j = -reach; j < reach; ++j)
+      for (int i = -reach; i < reach; ++i) {
+        if (static_cast<float>(i * i) / static_cast<float>(reach * reach) +
+                static_cast<float>(j * j) / static_cast<float>(reach * reach) >
+            1)
+          continue;
+        if (cx + i < 0 || cx + i >= kCells || cy + j < 0 || cy + j >= kCells) continue;
+        int& n = leaves_[static_cast<std::size_t>(cy + j) * kCells + (cx + i)];
+        n = std::clamp(n + change, 0, 255);
+      }
   }
-  EXPECT_GT(apices_seen, 10);
+
+  float light(float x, float y) const {
+    const int i = cell(x), j = cell(y);
+    if (i < 0 || i >= kCells || j < 0 || j >= kCells) return 0;
+    float power = 1;
+    for (int k = 0; k < leaves_[static_cast<std::size_t>(j) * kCells + i]; ++k) power *= 0.0001f;
+    return static_cast<float>(green(i, j) / 255.0 * power);
+  }
+
+ private:
+  static constexpr int kCells = 600;
+  static constexpr float kRange = 60, kLow = -55.05f;
+
+  static int cell(float p) {
+    const double c = std::floor((p - kLow) / kRange * static_cast<float>(kCells));
+    return c < -1e6 ? -1 : c > 1e6 ? kCells : static_cast<int>(c);
+  }
+  // The pixel clover samples, bottom row first; it never copies a PNG's last
+  // row and column.
+  static int green(int i, int j) {
+    const float ratio = 11.0f / 599.0f;
+    const int column = static_cast<int>(static_cast<float>(i) * ratio);
+    const int row = static_cast<int>(static_cast<float>(j) * ratio);
+    if (column == 11 || row == 11) return 0;
+    const int from_top = 11 - row;
+    if (column >= 8 && from_top <= 3) return 153;  // patch II
+    if (column <= 4 && from_top >= 7) return 255;  // patch I
+    return 38;                                     // patch III
+  }
+
+  std::vector<int> leaves_;
+};
+
+TEST(LightExamples, CloverFieldGetsCloversLight) {
+  const std::string folder = example_path("env-light/clover-field");
+  const std::string e_file = folder + "/clover-field.e";
+  env::FieldOptions field_options;
+  field_options.master = env::ModelingProgram::cpfg;
+  auto recorder = std::make_shared<Recorder>(env::make_field(env::read_comm_spec(e_file), field_options));
+  SimulationOptions options;
+  options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  options.environment.comm_file = e_file;
+  options.environment.field = recorder;
+  Simulation simulation(folder + "/clover-field.l", options);
+  simulation.derivation().run(40);
+  ASSERT_EQ(recorder->passes.size(), 40u);  // one before each step
+
+  CloverFieldRule rule;
+  int lit = 0;
+  for (const Recorder::Pass& pass : recorder->passes) {
+    std::vector<std::size_t> queries;
+    for (std::size_t k = 0; k < pass.queries.size(); ++k) {
+      const env::Query& q = pass.queries[k];
+      const float x = as_printed(q.turtle.position[0]), y = as_printed(q.turtle.position[1]);
+      const std::vector<float>& p = q.module.parameters;
+      if (p.size() == 1 || p[0] == 0) queries.push_back(k);
+      else rule.leaf(x, y, as_printed(p[1]), as_printed(p[0]) == 1 ? 1 : -1);
+    }
+    for (std::size_t k : queries) {
+      const env::Query& q = pass.queries[k];
+      const float expected = as_printed(rule.light(as_printed(q.turtle.position[0]), as_printed(q.turtle.position[1])));
+      ASSERT_TRUE(pass.answers[k].set[0]);
+      EXPECT_EQ(pass.answers[k].value[0], expected) << "query " << q.id << " at " << q.turtle.position[0] << " "
+                                                     << q.turtle.position[1];
+      lit += expected > 0.01f;
+    }
+  }
+  EXPECT_GT(lit, 10);
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // file and built-in program; the free and stopped tips after each step are
 // compared with a simulation written here, on integer lattices (Sierpinski,
 // Ulam) or with plain trigonometry and a comparison of all pairs (branch
-// tiers), sharing no code with the turtle or the programs.
+// tiers), sharing no code with the turtle or the programs. As in lpfg, the
+// environment answers in a pass before each step: the tips a step makes
+// are unanswered (E1(0)) in the string it leaves.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +77,7 @@ TEST(CollisionExamples, SierpinskiMatchesTheTriangularLattice) {
   std::vector<LatticeTip> modules = {{}};
   std::vector<TipCounts> expected;
   for (int n = 1; n <= 8; ++n) {
+    answer_point_collisions(modules);  // the pass before step n
     std::vector<LatticeTip> next;
     for (const LatticeTip& m : modules) {
       if (m.value != 0) {
@@ -87,14 +90,14 @@ TEST(CollisionExamples, SierpinskiMatchesTheTriangularLattice) {
       next.push_back({m.x + step[h1][0], m.y + step[h1][1], h1, m.sense, 0});
       next.push_back({m.x + step[h2][0], m.y + step[h2][1], h2, -m.sense, 0});
     }
-    answer_point_collisions(next);
     modules = next;
     expected.push_back(count_tips(modules));
   }
-  // By hand for the first steps: 2 free; then 4 tips of which the two
-  // inner ones meet.
+  // By hand for the first steps: 2 tips, then 4; the pass before step 3
+  // finds the two inner ones at one point.
   EXPECT_EQ(expected[0], (TipCounts{2, 0}));
-  EXPECT_EQ(expected[1], (TipCounts{2, 2}));
+  EXPECT_EQ(expected[1], (TipCounts{4, 0}));
+  EXPECT_EQ(expected[2], (TipCounts{4, 2}));
   for (int n : {1, 2, 3, 5, 8}) EXPECT_EQ(run_example("sierpinski", n, "0"), expected[n - 1]) << "step " << n;
 }
 
@@ -108,6 +111,7 @@ TEST(CollisionExamples, UlamMatchesTheSquareLattice) {
   for (int heading : {0, 1, 3, 2}) modules.push_back({step[heading][0], step[heading][1], heading, 1, 0});
   std::vector<TipCounts> expected;
   for (int n = 1; n <= 8; ++n) {
+    answer_point_collisions(modules);  // the pass before step n
     std::vector<LatticeTip> next;
     for (const LatticeTip& m : modules) {
       if (m.marker || m.value != 0) {
@@ -122,24 +126,26 @@ TEST(CollisionExamples, UlamMatchesTheSquareLattice) {
         next.push_back({m.x + step[h][0], m.y + step[h][1], h, 1, 0});
       }
     }
-    answer_point_collisions(next);
     modules = next;
     expected.push_back(count_tips(modules));
   }
-  // By hand: after step 1 the 12 new tips lie at 8 points; the 4 diagonal
-  // neighbours of the origin each get 2 tips (stopped), the 4 points two
-  // steps out along the axes get 1 (free).
-  EXPECT_EQ(expected[0], (TipCounts{4, 8}));
+  // By hand: the four tips of the axiom are apart, so step 1 makes 12 tips;
+  // the pass before step 2 finds the 4 diagonal neighbours of the origin
+  // reached twice each (8 stopped) and the 4 points two steps out once.
+  EXPECT_EQ(expected[0], (TipCounts{12, 0}));
+  EXPECT_EQ(expected[1], (TipCounts{12, 8}));
   for (int n : {1, 2, 4, 6}) EXPECT_EQ(run_example("ulam", n, "0"), expected[n - 1]) << "step " << n;
 }
 
-// Honda's tiers with honda81 (radius 0.3 in 2D): apices of one step compete;
-// an apex is stopped when one of higher vigor is closer than 0.6.
+// Honda's tiers with honda81 (radius 0.6; "3d case: on", since honda81's 2D
+// case compares x and z and the tiers lie in the x y plane): the new apices
+// of a step compete in the pass before the next; an apex is stopped by
+// another new apex at 0.6 or closer whose vigor is equal or higher. The
+// string a step leaves holds an E1 for each apex that step made.
 TEST(CollisionExamples, BranchTiersMatchAComparisonOfAllApexPairs) {
   const double r1 = 0.94, r2 = 0.87, alpha1 = 24.4, alpha2 = 36.9, phi = 138.5, reach = 0.6;
   struct Apex {
     double x, y, heading, v, vigor;
-    bool active;
   };
   auto move = [](double x, double y, double heading, double length) {
     double a = heading * std::numbers::pi / 180;
@@ -147,45 +153,41 @@ TEST(CollisionExamples, BranchTiersMatchAComparisonOfAllApexPairs) {
   };
   // Headings in degrees from +x; the turtle starts facing +y (90), Right(90)
   // faces +x; Left adds.
-  std::vector<Apex> apices;
+  std::vector<Apex> born;
   for (double origin_x : {0.0, 6.0})
     for (int k = 0; k < 5; ++k) {
       double heading = k * phi;
       auto [x, y] = move(origin_x, 0, heading, 1);
-      apices.push_back({x, y, heading, 1, 1, true});
+      born.push_back({x, y, heading, 1, 1});
     }
-  std::vector<TipCounts> expected;
+  std::vector<int> expected;  // E1 modules after each step
   for (int n = 1; n <= 8; ++n) {
-    std::vector<Apex> born, next;
-    for (const Apex& a : apices) {
-      if (!a.active) {
-        next.push_back(a);
-        continue;
-      }
-      auto [lx, ly] = move(a.x, a.y, a.heading + alpha2, a.v * r2);
-      auto [mx, my] = move(a.x, a.y, a.heading - alpha1, a.v * r1);
-      born.push_back({lx, ly, a.heading + alpha2, a.v * r2, r2, true});
-      born.push_back({mx, my, a.heading - alpha1, a.v * r1, r1, true});
-    }
-    TipCounts counts;
-    for (Apex& a : born) {
+    std::vector<Apex> next;
+    for (const Apex& a : born) {
       bool beaten = false;
       for (const Apex& b : born) {
+        if (&a == &b) continue;
         double d = std::hypot(a.x - b.x, a.y - b.y);
         ASSERT_GT(std::abs(d - reach), 1e-4) << "a pair too close to the threshold to compare with floats";
-        if (d < reach && b.vigor > a.vigor) beaten = true;
+        if (d <= reach && b.vigor >= a.vigor) beaten = true;
       }
-      a.active = !beaten;
-      (beaten ? counts.stopped : counts.free)++;
+      if (beaten) continue;
+      auto [lx, ly] = move(a.x, a.y, a.heading + alpha2, a.v * r2);
+      auto [mx, my] = move(a.x, a.y, a.heading - alpha1, a.v * r1);
+      next.push_back({lx, ly, a.heading + alpha2, a.v * r2, r2});
+      next.push_back({mx, my, a.heading - alpha1, a.v * r1, r1});
     }
-    next.insert(next.end(), born.begin(), born.end());
-    apices = next;
-    expected.push_back(counts);
+    born = next;
+    expected.push_back(static_cast<int>(born.size()));
   }
-  EXPECT_EQ(expected[0], (TipCounts{20, 0}));  // the first ten apices are far apart
-  for (int n : {1, 3, 5, 8}) EXPECT_EQ(run_example("branch-tiers", n, "1"), expected[n - 1]) << "step " << n;
+  EXPECT_EQ(expected[0], 20);  // the first ten apices are far apart
+  for (int n : {1, 3, 5, 8}) {
+    const TipCounts tips = run_example("branch-tiers", n, "-");
+    EXPECT_EQ(tips.free + tips.stopped, expected[n - 1]) << "step " << n;
+  }
   // Growth is limited: fewer than the 10 * 2^8 apices of unlimited branching.
-  EXPECT_LT(expected[7].free + expected[7].stopped, 2560);
+  EXPECT_LT(expected[7], 2560);
+  EXPECT_LT(expected[7], 2 * expected[6]);
 }
 
 }  // namespace

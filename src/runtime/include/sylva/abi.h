@@ -123,7 +123,9 @@ struct ControlState {
   int step = 0;
   int current_group = 0;
   int next_group = 0;
-  std::uint64_t rand48 = 0x1234ABCD330EULL;  // drand48's state after srand48(0)
+  // lpfg seeds its ran() as srand48(0) leaves drand48: {0x330E, 0, 0} (low
+  // 16 bits first); a model that never calls sran() draws that sequence.
+  std::uint64_t rand48 = 0x330EULL;
   // Messages (Printf, warnings) go through the engine.
   void* host = nullptr;
   void (*message)(void* host, const char* text) = nullptr;
