@@ -66,7 +66,13 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
-      geometry::TriangleMesh mesh = geometry::tessellate(scene, view.tessellation_options());
+      // An L+C model's mesh is what lpfg exports (lines as cylinders of the
+      // turtle's width whatever the line style); cpfg exports no meshes, so
+      // a cpfg model's follows its view file.
+      const geometry::TessellationOptions tessellation = simulation.types().cpfg()
+                                                            ? view.tessellation_options()
+                                                            : geometry::lpfg_export_options(view.contour_sides);
+      geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
       geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());

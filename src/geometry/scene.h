@@ -41,6 +41,9 @@ struct Circle {
   bool facing_viewer = false;  // CircleFront*: always in the screen plane
   int color = 1;
   Provenance from;
+  // The turtle's heading: a tessellated circle starts at the turtle's right
+  // (heading x normal) and turns toward the heading, as lpfg's OBJ export does.
+  Vec3 heading{0, 1, 0};
 };
 
 struct Sphere {
@@ -48,6 +51,7 @@ struct Sphere {
   float radius = 1;
   int color = 1;
   Provenance from;
+  int slices = 0;  // the turtle's ContourSides (lpfg: also a sphere's slices); 0: the view's contour sides
 };
 
 struct Label {

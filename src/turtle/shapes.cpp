@@ -19,6 +19,7 @@ void TurtleInterpreter::Impl::circle(float radius, float outline, bool facing_vi
     geometry::Circle c;
     c.center = state_.position;
     c.normal = state_.frame.up;
+    c.heading = state_.frame.heading;
     c.radius = radius;
     c.outline = outline;
     c.facing_viewer = facing_viewer;
@@ -38,6 +39,7 @@ void TurtleInterpreter::Impl::sphere(float radius) {
     geometry::Sphere s;
     s.center = state_.position;
     s.radius = radius;
+    s.slices = state_.contour_sides;
     s.color = state_.color;
     s.from = from_;
     scene_->spheres.push_back(s);
