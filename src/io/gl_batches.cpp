@@ -24,8 +24,7 @@ void group_by_material(std::vector<MeshPart>& parts, std::vector<std::uint32_t>&
   if (changes <= kMaxMaterialRuns) return;
   std::stable_sort(parts.begin(), parts.end(),
                    [](const MeshPart& a, const MeshPart& b) {
-                     return (a.color & 255) != (b.color & 255) ? (a.color & 255) < (b.color & 255)
-                                                               : a.back_color < b.back_color;
+                     return a.color != b.color ? a.color < b.color : a.back_color < b.back_color;
                    });
   std::vector<std::uint32_t> sorted;
   sorted.reserve(indices.size());
@@ -71,7 +70,7 @@ Batches::Batches(const geometry::Scene& scene, std::vector<geometry::TriangleMes
   for (std::size_t m = 0; m < meshes.size(); ++m)
     for (const MeshPart& p : parts[m])
       add({Draw::Kind::Triangles, static_cast<std::uint32_t>(m), p.first_index, p.index_count,
-           options.lit ? (p.color & 255) : -1, options.lit && p.back_color >= 0 ? (p.back_color & 255) : -1, 1});
+           options.lit ? p.color : -1, options.lit && p.back_color >= 0 ? p.back_color : -1, 1});
   for (std::size_t l = 0; l < line_widths_.size(); ++l)
     add({Draw::Kind::Lines, 0, static_cast<std::uint32_t>(2 * l), 2, -1, -1, line_widths_[l]});
 }

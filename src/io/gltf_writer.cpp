@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <compare>
 #include <cstring>
+#include <map>
 #include <sstream>
 
 #include "io/mesh_support.h"
@@ -26,13 +28,15 @@ double linear(float srgb) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-// Materials are indexed by colour slot, plus 256 for the one-sided copy that
-// parts with a back colour of their own use (geometry/back_sides.h).
-constexpr std::size_t kOneSided = 256;
-std::size_t material_slot(const MeshPart& part) {
-  return static_cast<std::size_t>(mesh_support::color_slot(part.color)) +
-         (part.side == MeshPart::Side::Both ? 0 : kOneSided);
-}
+// A material per colour index, and a one-sided copy for parts with a back
+// colour of their own (geometry/back_sides.h); two-sided ones first.
+struct MaterialKey {
+  bool one_sided = false;
+  int color = 1;
+  auto operator<=>(const MaterialKey&) const = default;
+};
+MaterialKey material_key(const MeshPart& part) { return {part.side != MeshPart::Side::Both, part.color}; }
+using MaterialIndex = std::map<MaterialKey, int>;
 
 tinygltf::Material material(int color, const geometry::Material& m, bool double_sided) {
   tinygltf::Material out;
@@ -62,17 +66,16 @@ class GlbBuilder {
 
   // One primitive per colour: `per` indices an element (3 triangles, 2 lines).
   void add_primitives(const std::vector<MeshPart>& parts, const std::vector<std::uint32_t>& indices, int mode,
-                      std::uint32_t per, const std::array<int, 2 * kOneSided>& material_of, tinygltf::Mesh& out) {
-    std::array<std::vector<const MeshPart*>, 2 * kOneSided> by_color;
-    for (const MeshPart& part : parts) by_color[material_slot(part)].push_back(&part);
-    for (std::size_t color = 0; color < 2 * kOneSided; ++color) {
-      if (by_color[color].empty()) continue;
+                      std::uint32_t per, const MaterialIndex& material_of, tinygltf::Mesh& out) {
+    std::map<MaterialKey, std::vector<const MeshPart*>> by_material;
+    for (const MeshPart& part : parts) by_material[material_key(part)].push_back(&part);
+    for (const auto& [key, group] : by_material) {
       ++serial_;
       positions_.clear();
       normals_.clear();
       indices_.clear();
       records_.clear();
-      for (const MeshPart* part : by_color[color]) {
+      for (const MeshPart* part : group) {
         std::uint32_t count = part->index_count - part->index_count % per;
         if (count == 0) continue;
         records_.insert(records_.end(), {static_cast<std::uint32_t>(indices_.size() / per), count / per,
@@ -83,7 +86,7 @@ class GlbBuilder {
 
       tinygltf::Primitive primitive;
       primitive.mode = mode;
-      primitive.material = material_of[color];
+      primitive.material = material_of.at(key);
       primitive.attributes["POSITION"] = accessor(view(positions_, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_TYPE_VEC3,
                                                   TINYGLTF_COMPONENT_TYPE_FLOAT, positions_.size(), true);
       primitive.attributes["NORMAL"] = accessor(view(normals_, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_TYPE_VEC3,
@@ -162,15 +165,12 @@ void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, cons
   model.asset.version = "2.0";
   model.asset.generator = "Sylva";
 
-  std::array<int, 2 * kOneSided> material_of{};
-  std::array<bool, 2 * kOneSided> used{};
+  MaterialIndex material_of;
   for (const auto* parts : {&mesh.parts, &mesh.line_parts})
-    for (const MeshPart& part : *parts) used[material_slot(part)] = true;
-  for (std::size_t slot = 0; slot < 2 * kOneSided; ++slot) {
-    if (!used[slot]) continue;
-    const int color = static_cast<int>(slot % kOneSided);
-    material_of[slot] = static_cast<int>(model.materials.size());
-    model.materials.push_back(material(color, palette.at(color), slot < kOneSided));
+    for (const MeshPart& part : *parts) material_of.emplace(material_key(part), 0);
+  for (auto& [key, index] : material_of) {
+    index = static_cast<int>(model.materials.size());
+    model.materials.push_back(material(key.color, palette.at(key.color), !key.one_sided));
   }
 
   tinygltf::Mesh out;

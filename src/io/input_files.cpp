@@ -1,5 +1,7 @@
 #include "io/input_files.h"
 
+#include <map>
+
 #include "io/contour_file.h"
 #include "io/function_file.h"
 #include "io/input_text.h"
@@ -39,6 +41,38 @@ geometry::BezierSurface load_surface(const ViewFile& view, const SurfaceCommand&
   return surface;
 }
 
+// cpfg's colour files, each of its number: all colormaps, or all material
+// sets, whichever kind came last (cpfg: "later wins"); the other kind's files
+// are read past.
+geometry::Palette read_palette(InputKind mode, const std::map<int, std::optional<std::string>>& colormaps,
+                               const std::map<int, std::optional<std::string>>& materials,
+                               std::vector<std::string>& warnings) {
+  const bool colormap = mode == InputKind::Colormap;
+  geometry::Palette palette;
+  palette.from_materials = !colormap;
+  bool first = false;
+  for (const auto& [slot, path] : colormap ? colormaps : materials) {
+    if (!path) continue;
+    geometry::Palette bank = colormap ? read_colormap_file(*path) : read_material_file(*path);
+    if (slot == 1) {
+      palette.entries = bank.entries;
+      first = true;
+    } else {
+      palette.banks[slot] = bank.entries;
+    }
+  }
+  // Without a first colormap, colours 0..255 get cpfg's default.
+  if (!first) palette.entries.fill(palette.missing());
+  for (const auto& [slot, path] : colormap ? materials : colormaps) {
+    if (!path) continue;
+    read_input_file(*path, "colour file");
+    warnings.push_back(*path + ": warning: not used: a " + (colormap ? "colormap" : "material file") +
+                       " given later decides that colours come from " +
+                       (colormap ? "colormaps" : "material sets") + ", as in cpfg");
+  }
+  return palette;
+}
+
 }  // namespace
 
 turtle::TurtleSettings InputFiles::turtle_settings() const {
@@ -64,6 +98,8 @@ InputKind input_kind_of(const std::string& path) {
 InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler) {
   InputFiles inputs;
   std::optional<std::string> view_path, animation_path, colour_path;
+  std::map<int, std::optional<std::string>> colormap_banks, material_banks;
+  InputKind colour_mode = InputKind::Unknown;
   for (const InputFile& file : files) {
     const std::string& path = file.path;
     switch (file.kind) {
@@ -76,16 +112,22 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
         inputs.animation = read_animation_file(path);
         break;
       case InputKind::Colormap:
-      case InputKind::Materials:
-        if (file.slot != 1) {
-          read_input_file(path, "colour file");
-          inputs.warnings.push_back(path + ": warning: colour file " + std::to_string(file.slot) +
-                                    " is not used; only the first colormap or material set is");
-          break;
+      case InputKind::Materials: {
+        // cpfg keeps a colormap and a material set per number (-m2, -M3);
+        // lpfg one colour file. The kind given last decides the mode.
+        auto& banks = file.kind == InputKind::Colormap ? colormap_banks : material_banks;
+        if (file.slot == 1) {
+          // One first colour file: a colormap replaces a material set too.
+          replace_earlier(colour_path, path, "colormap or material file", inputs.warnings);
+          colormap_banks.erase(1);
+          material_banks.erase(1);
+        } else {
+          replace_earlier(banks[file.slot], path, "colour file " + std::to_string(file.slot), inputs.warnings);
         }
-        replace_earlier(colour_path, path, "colormap or material file", inputs.warnings);
-        inputs.palette = file.kind == InputKind::Colormap ? read_colormap_file(path) : read_material_file(path);
+        banks[file.slot] = path;
+        colour_mode = file.kind;
         break;
+      }
       case InputKind::Contour:
         inputs.contours.push_back(read_contour_file(path));
         break;
@@ -113,6 +155,7 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
         break;
     }
   }
+  if (colour_mode != InputKind::Unknown) inputs.palette = read_palette(colour_mode, colormap_banks, material_banks, inputs.warnings);
   if (inputs.view) {
     for (const SurfaceCommand& s : inputs.view->surfaces) inputs.surfaces.push_back(load_surface(*inputs.view, s));
     inputs.warnings.insert(inputs.warnings.end(), inputs.view->warnings.begin(), inputs.view->warnings.end());
