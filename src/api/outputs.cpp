@@ -34,17 +34,18 @@ const io::ViewFile& view_or_default(const Simulation& s) {
   return s.inputs().view ? *s.inputs().view : defaults;
 }
 
-io::ImageSettings image_settings(const io::ViewFile& view) {
+io::ImageSettings image_settings(const io::ViewFile& view, bool cpfg) {
   io::ImageSettings settings;
   settings.render = view.render;
   settings.lights = view.lights_or_default();
   settings.contour_sides = view.contour_sides;
+  settings.label_font = io::label_font(view, cpfg);
   return settings;
 }
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s)),
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s), s.types().cpfg()),
                                        options.width, options.height));
 }
 

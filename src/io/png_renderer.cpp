@@ -16,6 +16,7 @@
 #include "io/gl_batches.h"
 #include "io/gl_meshes.h"
 #include "io/gl_shadows.h"
+#include "io/raster_labels.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
@@ -393,7 +394,9 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
   glFinish();
   const GLenum error = glGetError();
   if (error == GL_OUT_OF_MEMORY) throw ModelError("out of memory rendering the image");
-  return read_image(context, factor);
+  Image image = read_image(context, factor);
+  draw_labels(image, scene.labels, palette, camera, settings.label_font);
+  return image;
 }
 
 }  // namespace sylva::io
