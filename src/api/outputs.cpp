@@ -34,18 +34,28 @@ const io::ViewFile& view_or_default(const Simulation& s) {
   return s.inputs().view ? *s.inputs().view : defaults;
 }
 
-io::ImageSettings image_settings(const io::ViewFile& view, bool cpfg) {
+// The view file's texture images; none for a cpfg model in colormap mode,
+// where cpfg maps no textures (CPFG manual 6.7.4).
+std::vector<io::TextureImage> texture_images(const io::ViewFile& view, const Simulation& s) {
+  std::vector<io::TextureImage> images;
+  if (s.types().cpfg() && !s.inputs().palette.from_materials) return images;
+  for (const std::string& path : view.textures) images.push_back(io::read_texture_image(path));
+  return images;
+}
+
+io::ImageSettings image_settings(const io::ViewFile& view, const Simulation& s) {
   io::ImageSettings settings;
   settings.render = view.render;
   settings.lights = view.lights_or_default();
   settings.contour_sides = view.contour_sides;
-  settings.label_font = io::label_font(view, cpfg);
+  settings.label_font = io::label_font(view, s.types().cpfg());
+  settings.textures = texture_images(view, s);
   return settings;
 }
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s), s.types().cpfg()),
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s), s),
                                        options.width, options.height));
 }
 
@@ -77,7 +87,7 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
       geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
-      else io::write_glb(path, mesh, palette, simulation.types());
+      else io::write_glb(path, mesh, palette, simulation.types(), texture_images(view, simulation));
       break;
     }
     case Format::Vector:

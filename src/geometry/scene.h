@@ -30,6 +30,17 @@ struct Segment {
   float start_width = 1, end_width = 1;
   int color = 1;
   Provenance from;
+  // The texture (an index into the view file's textures; -1: none) and the
+  // texture's v at both ends, u going round a cylinder from its seam.
+  int texture = -1;
+  float texture_v0 = 0, texture_v1 = 1;
+};
+
+// A texture coordinate: u across the image, v up it (0 at its bottom row,
+// as OpenGL takes it).
+struct TexCoord {
+  float u = 0, v = 0;
+  constexpr bool operator==(const TexCoord&) const = default;
 };
 
 // A filled circle (disc) or a circle outline of width `outline` (CircleB).
@@ -82,6 +93,9 @@ struct TriangleGroup {
   // cpfg's @; @, (CPFG manual 6.3): the colour of the side the triangles'
   // normals point away from; -1: that side is coloured as the front.
   int back_color = -1;
+  // The texture mapped on the triangles (an index into the view file's
+  // textures, with Scene::texcoords); -1: none.
+  int texture = -1;
 };
 
 struct Scene {
@@ -95,6 +109,14 @@ struct Scene {
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> indices;
   std::vector<TriangleGroup> groups;
+  // Texture coordinates of the pool's vertices, where a textured group gave
+  // them: shorter than `positions` when the last vertices have none ((0, 0)).
+  std::vector<TexCoord> texcoords;
+  TexCoord texcoord(std::uint32_t vertex) const { return vertex < texcoords.size() ? texcoords[vertex] : TexCoord{}; }
+  void set_texcoord(std::uint32_t vertex, TexCoord t) {
+    if (texcoords.size() <= vertex) texcoords.resize(vertex + 1);
+    texcoords[vertex] = t;
+  }
 
   // Set by the last Camera module in the string.
   std::optional<CameraPose> camera;

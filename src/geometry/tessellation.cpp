@@ -56,12 +56,35 @@ class Builder {
     Vec3 v = cross(h, u);
     MeshPart part = begin_part(MeshPart::Kind::Segment, s.color, s.from, mesh_.indices);
     auto base = vertex_count();
+    const bool textured = s.texture >= 0;
+    part.texture = s.texture;
     if (style == LineStyle::Polygon) {
       add_vertex(s.start - v * r0, u);
       add_vertex(s.start + v * r0, u);
       add_vertex(s.end + v * r1, u);
       add_vertex(s.end - v * r1, u);
+      if (textured) {
+        set_texcoord(base, {0, s.texture_v0});
+        set_texcoord(base + 1, {1, s.texture_v0});
+        set_texcoord(base + 2, {1, s.texture_v1});
+        set_texcoord(base + 3, {0, s.texture_v1});
+      }
       add_quad(base, base + 1, base + 2, base + 3);
+    } else if (textured) {
+      // The texture wraps once round: the seam's vertices come twice, at
+      // u = 0 and u = 1 (lpfg's contour repeats its first point too).
+      auto n = static_cast<std::uint32_t>(line_angles_.size());
+      Vec3 left = -v;
+      for (int end = 0; end < 2; ++end) {
+        for (std::uint32_t k = 0; k <= n; ++k) {
+          const auto& [c, sn] = line_angles_[k % n];
+          Vec3 dir = left * c + u * sn;
+          add_vertex((end ? s.end : s.start) + dir * (end ? r1 : r0), normalized(dir * len + h * (r0 - r1)));
+          set_texcoord(vertex_count() - 1,
+                       {static_cast<float>(k) / static_cast<float>(n), end ? s.texture_v1 : s.texture_v0});
+        }
+      }
+      for (std::uint32_t k = 0; k < n; ++k) add_quad(base + k, base + k + 1, base + n + 2 + k, base + n + 1 + k);
     } else {
       // Open ends: the segments of a branch meet there, and caps would be
       // hidden faces doubling the triangle count.
@@ -166,6 +189,7 @@ class Builder {
     if (std::any_of(first, first + count, [&](std::uint32_t i) { return i >= scene.positions.size(); })) return;
     MeshPart part = begin_part(part_kind(g.kind), g.color, g.from, mesh_.indices);
     part.back_color = g.back_color;
+    part.texture = g.texture;
     std::uint32_t base = vertex_count();
     for (auto it = first; it != first + count; ++it) {
       std::uint32_t i = *it;
@@ -173,6 +197,7 @@ class Builder {
         stamp_[i] = group_number_;
         remap_[i] = vertex_count();
         add_vertex(scene.positions[i], i < scene.normals.size() ? scene.normals[i] : Vec3{});
+        if (g.texture >= 0) set_texcoord(remap_[i], scene.texcoord(i));
       }
       mesh_.indices.push_back(remap_[i]);
     }
@@ -225,6 +250,10 @@ class Builder {
   void add_vertex(Vec3 p, Vec3 n) {
     mesh_.positions.push_back(p);
     mesh_.normals.push_back(n);
+  }
+  void set_texcoord(std::uint32_t vertex, TexCoord t) {
+    if (mesh_.texcoords.size() <= vertex) mesh_.texcoords.resize(vertex + 1);
+    mesh_.texcoords[vertex] = t;
   }
   void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
@@ -293,6 +322,7 @@ TriangleMesh tessellate(const Scene& scene, const TessellationOptions& options) 
     else
       builder.sphere(scene.spheres[p++]);
   }
+  if (!mesh.texcoords.empty()) mesh.texcoords.resize(mesh.positions.size());
   return mesh;
 }
 

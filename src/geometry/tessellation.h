@@ -35,6 +35,7 @@ struct MeshPart {
   int color = 1;
   Provenance from;
   int back_color = -1;  // the TriangleGroup's; -1: both sides in `color`
+  int texture = -1;     // the primitive's texture; -1: none
   // Which side of the triangles a part shows: both, or, once
   // split_back_sides has given the back its own part, one.
   enum class Side : std::uint8_t { Both, Front, Back };
@@ -44,6 +45,8 @@ struct MeshPart {
 struct TriangleMesh {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;
+  // Texture coordinates per vertex when some part is textured (else empty).
+  std::vector<TexCoord> texcoords;
   std::vector<std::uint32_t> indices;  // triangles, 3 per
   std::vector<MeshPart> parts;          // runs of `indices`
   // Pixel-style segments: pairs of indices into positions.

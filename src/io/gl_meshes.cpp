@@ -96,6 +96,7 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
   full.normals = scene.normals;
   full.indices = scene.indices;
   full.groups = scene.groups;
+  full.texcoords = scene.texcoords;
   if (!pixel_lines) {
     for (std::size_t i = 0; i < scene.segments.size(); ++i) {
       geometry::Segment s = scene.segments[i];

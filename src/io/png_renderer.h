@@ -13,6 +13,7 @@
 #include "geometry/tessellation.h"
 #include "geometry/vec3.h"
 #include "io/label_font.h"
+#include "io/texture_image.h"
 #include "io/view_file.h"
 
 namespace sylva::io {
@@ -56,6 +57,10 @@ struct ImageSettings {
   std::vector<Light> lights;
   int contour_sides = 16;  // of cylinders, discs and spheres; < 3 counts as 3
   LabelFont label_font;
+  // The view file's textures, by id: multiplied into the colour of the
+  // triangles that name them (OpenGL's modulate, lpfg's and cpfg's default),
+  // nearest texel, repeating past the edges. Ids with no image draw untextured.
+  std::vector<TextureImage> textures;
 };
 
 // Draws `scene` through the camera of `view` into a width x height image on

@@ -463,8 +463,8 @@ void Parser::surface(WordReader& in) {
     if (s.s_divisions < 1 || s.t_divisions < 1) in.fail(sw, "expected positive numbers of subdivisions");
   }
   if (cpfg && !in.at_end()) {
-    Word tw = in.next("a texture file");
-    view_.warnings.push_back(warning_at(file_, tw, "texture file '" + tw.text + "' of a surface is not supported yet; ignored"));
+    // Its texture goes after the texture: commands' (which @Tx numbers).
+    s.texture_path = resolve_beside(view_.path, in.next("a texture file").text);
   } else if (!in.at_end()) {
     Word tw = in.peek();
     s.texture = in.integer("the texture id");
@@ -491,7 +491,35 @@ void Parser::mesh(WordReader& in) {
   view_.meshes.push_back(m);
 }
 
-void Parser::texture(WordReader& in) { view_.textures.push_back(resolve_beside(view_.path, in.next("an image file name").text)); }
+// lpfg: "texture: file" (ids from 0, LPFG manual 8.1.5); cpfg: subcommands
+// "texture: F: file E: mode S: R: ratio H: filter L: filter" (ids from 1 in
+// @Tx, CPFG manual 8.1.7). Only the file is used; the other subcommands are
+// read and said to be ignored.
+void Parser::texture(WordReader& in) {
+  const Word first = in.next("an image file name or F:");
+  if (first.text.size() < 2 || first.text.back() != ':') {
+    view_.textures.push_back(resolve_beside(view_.path, first.text));
+    return;
+  }
+  std::string file;
+  for (Word key = first;; key = in.next("a texture subcommand")) {
+    const std::string k = to_lower(key.text);
+    if (k == "f:") {
+      file = in.next("a texture file name").text;
+    } else if (k == "s:") {
+      view_.warnings.push_back(warning_at(file_, key, "texture subcommand S: (one texture per surface) ignored"));
+    } else if (k == "e:" || k == "r:" || k == "h:" || k == "l:") {
+      const Word value = in.next("the value of " + key.text);
+      if (k == "e:" || k == "r:")
+        view_.warnings.push_back(warning_at(file_, key, "texture subcommand " + key.text + " " + value.text + " ignored"));
+    } else {
+      in.fail(key, "expected a texture subcommand (F:, E:, S:, R:, H: or L:), found '" + key.text + "'");
+    }
+    if (in.at_end()) break;
+  }
+  if (file.empty()) in.fail(first, "a cpfg texture needs its file (F: file)");
+  view_.textures.push_back(resolve_beside(view_.path, file));
+}
 
 void Parser::winfont(WordReader& in) {
   view_.winfont.name = in.next("a font name").text;
@@ -554,6 +582,11 @@ void Parser::color_increment(WordReader& in) {
 }
 
 void Parser::finish() {
+  for (SurfaceCommand& s : view_.surfaces) {
+    if (s.texture_path.empty()) continue;
+    s.texture = static_cast<int>(view_.textures.size());
+    view_.textures.push_back(s.texture_path);
+  }
   // The manual: both distances must be given to have an effect.
   if (front_ && back_)
     set_all_views([&](geometry::ViewParameters& v) {

@@ -76,6 +76,7 @@ struct SurfaceCommand {
   float scale = 1;
   int s_divisions = 0, t_divisions = 0;  // 0: the surface's default
   int texture = -1;                      // -1: none
+  std::string texture_path;              // cpfg's texfile, added to the textures at the end
   int line = 0, column = 0;              // of the file name, for messages
 };
 

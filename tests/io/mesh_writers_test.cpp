@@ -817,7 +817,9 @@ TEST(MeshGlb, EmptyMeshIsAValidFile) {
 TEST(MeshWriters, UnwritablePathThrowsAndLeavesNoFile) {
   Sample s = sample();
   using Writer = void (*)(const std::string&, const TriangleMesh&, const geometry::Palette&, const ModuleTypes&);
-  for (auto [name, write] : {std::pair<const char*, Writer>{"obj", io::write_obj}, {"ply", io::write_ply}, {"glb", io::write_glb}}) {
+  const Writer glb = [](const std::string& path, const TriangleMesh& mesh, const geometry::Palette& palette,
+                        const ModuleTypes& types) { io::write_glb(path, mesh, palette, types); };
+  for (auto [name, write] : {std::pair<const char*, Writer>{"obj", io::write_obj}, {"ply", io::write_ply}, {"glb", glb}}) {
     std::string dir = test::make_temp_dir(std::string("mesh-unwritable-") + name);
     // A missing directory, and a directory where the file should go.
     std::string missing = dir + "/missing/plant." + name;
