@@ -67,9 +67,16 @@ void check_output_path(const std::string& path) {
                      "unknown output format (expected .obj, .ply, .glb, .svg, .pdf, .ps, .eps or .png)");
 }
 
-void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
+void write_output(const std::string& path, const geometry::Scene& plant, const Simulation& simulation,
                   const OutputOptions& options, int view_id) {
   check_output_path(path);
+  // cpfg's background scene, drawn first, with the plant.
+  geometry::Scene with_background;
+  if (simulation.inputs().background) {
+    with_background = *simulation.inputs().background;
+    with_background.append(plant);
+  }
+  const geometry::Scene& scene = simulation.inputs().background ? with_background : plant;
   const io::ViewFile& view = view_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
   const Format f = format_of(path);

@@ -125,6 +125,10 @@ struct Scene {
   void add_triangles(TriangleGroup::Kind kind, const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
                      const std::vector<std::uint32_t>& triangle_indices, int color, Provenance from);
 
+  // Appends `other`'s primitives after this Scene's own (its triangle pool
+  // indices moved past this one's).
+  void append(const Scene& other);
+
   bool empty() const {
     return segments.empty() && circles.empty() && spheres.empty() && labels.empty() && groups.empty();
   }

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "io/background_scene.h"
 #include "io/contour_file.h"
 #include "io/function_file.h"
 #include "io/input_text.h"
@@ -157,6 +158,23 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
     }
   }
   if (colour_mode != InputKind::Unknown) inputs.palette = read_palette(colour_mode, colormap_banks, material_banks, inputs.warnings);
+  if (inputs.view && !inputs.view->background_scenes.empty()) {
+    if (colour_mode == InputKind::Unknown) {
+      inputs.warnings.push_back(inputs.view->path +
+                                ": warning: background scene not drawn: cpfg draws it only with a colormap or "
+                                "material file (-m or -M)");
+    } else {
+      BackgroundScene background =
+          read_background_scene(inputs.view->background_scenes, compiler, inputs.palette.from_materials);
+      geometry::MaterialBank& bank = inputs.palette.banks[kBackgroundBank];
+      for (std::size_t k = 0; k < background.materials.size() && k < bank.size(); ++k) bank[k] = background.materials[k];
+      if (background.materials.size() > bank.size())
+        inputs.warnings.push_back(inputs.view->path + ": warning: only the background scene's first " +
+                                  std::to_string(bank.size()) + " materials are kept");
+      inputs.warnings.insert(inputs.warnings.end(), background.warnings.begin(), background.warnings.end());
+      inputs.background = std::move(background.scene);
+    }
+  }
   if (inputs.view) {
     for (const SurfaceCommand& s : inputs.view->surfaces) inputs.surfaces.push_back(load_surface(*inputs.view, s));
     inputs.warnings.insert(inputs.warnings.end(), inputs.view->warnings.begin(), inputs.view->warnings.end());

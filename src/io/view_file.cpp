@@ -24,7 +24,7 @@ const std::set<std::string>& cpfg_commands() {
   static const std::set<std::string> names = {
       "ambient light", "background color", "light direction", "diffuse reflection",
       "cue range", "shade mode", "surface ambient", "surface diffuse", "tapered lines", "twist of cylinders",
-      "viewpoint", "view reference point", "viewing angle", "twist", "interpretation step", "background scene",
+      "viewpoint", "view reference point", "viewing angle", "twist", "interpretation step",
       "tropism direction", "initial elasticity", "elasticity increment", "function", "function set", "contour",
       "tsurface"};
   return names;
@@ -82,6 +82,7 @@ class Parser {
   void surface(WordReader& in);
   void mesh(WordReader& in);
   void texture(WordReader& in);
+  void background_scene(WordReader& in);
   void font(WordReader& in) { view_.font = in.rest_of_line("an X font name"); }
   void winfont(WordReader& in);
   void ps_linecap(WordReader& in);
@@ -134,6 +135,7 @@ const std::map<std::string, Parser::Handler>& Parser::handlers() {
       {"surface", &Parser::surface},
       {"mesh", &Parser::mesh},
       {"texture", &Parser::texture},
+      {"background scene", &Parser::background_scene},
       {"font", &Parser::font},
       {"winfont", &Parser::winfont},
       {"ps linecap", &Parser::ps_linecap},
@@ -519,6 +521,21 @@ void Parser::texture(WordReader& in) {
   }
   if (file.empty()) in.fail(first, "a cpfg texture needs its file (F: file)");
   view_.textures.push_back(resolve_beside(view_.path, file));
+}
+
+// cpfg's "background scene: file" (CPFG manual 8.1.4, 8.3); cpfg splits the
+// rest of the line into several files at blanks, commas and semicolons.
+void Parser::background_scene(WordReader& in) {
+  const std::string names = in.rest_of_line("a background scene file");
+  std::string name;
+  for (char c : names + " ") {
+    if (c == ' ' || c == '\t' || c == ',' || c == ';') {
+      if (!name.empty()) view_.background_scenes.push_back(resolve_beside(view_.path, name));
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
 }
 
 void Parser::winfont(WordReader& in) {

@@ -120,6 +120,7 @@ struct ViewFile {
   std::vector<SurfaceCommand> surfaces;
   std::vector<MeshCommand> meshes;
   std::vector<std::string> textures;  // paths relative to the view file's folder; ids from 0
+  std::vector<std::string> background_scenes;  // cpfg's background scene files (io/background_scene.h)
 
   std::string font = "-*-courier-bold-r-*-*-12-*-*-*-*-*-*-*";
   WinFont winfont;
