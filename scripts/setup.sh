@@ -9,6 +9,7 @@ PACKAGES=(
   libbenchmark-dev            # bench/
   pkg-config libcairo2-dev libosmesa6-dev libpng-dev   # vector drawings, offscreen OpenGL, PNG
   libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
+  libgraphicsmagick1-dev                               # texture images (PNG, SGI .rgb ...)
   libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
 )
 

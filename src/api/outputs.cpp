@@ -34,17 +34,28 @@ const io::ViewFile& view_or_default(const Simulation& s) {
   return s.inputs().view ? *s.inputs().view : defaults;
 }
 
-io::ImageSettings image_settings(const io::ViewFile& view) {
+// The view file's texture images; none for a cpfg model in colormap mode,
+// where cpfg maps no textures (CPFG manual 6.7.4).
+std::vector<io::TextureImage> texture_images(const io::ViewFile& view, const Simulation& s) {
+  std::vector<io::TextureImage> images;
+  if (s.types().cpfg() && !s.inputs().palette.from_materials) return images;
+  for (const std::string& path : view.textures) images.push_back(io::read_texture_image(path));
+  return images;
+}
+
+io::ImageSettings image_settings(const io::ViewFile& view, const Simulation& s) {
   io::ImageSettings settings;
   settings.render = view.render;
   settings.lights = view.lights_or_default();
   settings.contour_sides = view.contour_sides;
+  settings.label_font = io::label_font(view, s.types().cpfg());
+  settings.textures = texture_images(view, s);
   return settings;
 }
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s)),
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s), s),
                                        options.width, options.height));
 }
 
@@ -56,9 +67,16 @@ void check_output_path(const std::string& path) {
                      "unknown output format (expected .obj, .ply, .glb, .svg, .pdf, .ps, .eps or .png)");
 }
 
-void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
+void write_output(const std::string& path, const geometry::Scene& plant, const Simulation& simulation,
                   const OutputOptions& options, int view_id) {
   check_output_path(path);
+  // cpfg's background scene, drawn first, with the plant.
+  geometry::Scene with_background;
+  if (simulation.inputs().background) {
+    with_background = *simulation.inputs().background;
+    with_background.append(plant);
+  }
+  const geometry::Scene& scene = simulation.inputs().background ? with_background : plant;
   const io::ViewFile& view = view_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
   const Format f = format_of(path);
@@ -66,11 +84,17 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
-      geometry::TriangleMesh mesh = geometry::tessellate(scene, view.tessellation_options());
+      // An L+C model's mesh is what lpfg exports (lines as cylinders of the
+      // turtle's width whatever the line style); cpfg exports no meshes, so
+      // a cpfg model's follows its view file.
+      const geometry::TessellationOptions tessellation = simulation.types().cpfg()
+                                                            ? view.tessellation_options()
+                                                            : geometry::lpfg_export_options(view.contour_sides);
+      geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
       geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
-      else io::write_glb(path, mesh, palette, simulation.types());
+      else io::write_glb(path, mesh, palette, simulation.types(), texture_images(view, simulation));
       break;
     }
     case Format::Vector:

@@ -7,7 +7,7 @@ namespace sylva::geometry {
 namespace {
 
 // Whether a part's back has a colour of its own (a colour index other than its front's).
-bool has_own_back(const MeshPart& p) { return p.back_color >= 0 && (p.back_color & 255) != (p.color & 255); }
+bool has_own_back(const MeshPart& p) { return p.back_color >= 0 && p.back_color != p.color; }
 
 }  // namespace
 

@@ -23,6 +23,27 @@ Rgb from_hsv(float hue_degrees, float saturation, float value) {
 
 }  // namespace
 
+int Palette::bank_of(int index) {
+  const int absolute = index + kBankSize;
+  return absolute >= 0 ? absolute / kBankSize : -((-absolute + kBankSize - 1) / kBankSize);
+}
+
+int Palette::entry_of(int index) { return ((index % kBankSize) + kBankSize) % kBankSize; }
+
+const Material& Palette::at(int index) const {
+  if (index >= 0 && index < kBankSize) return entries[static_cast<std::size_t>(index)];
+  auto bank = banks.find(bank_of(index));
+  if (bank != banks.end()) return bank->second[static_cast<std::size_t>(entry_of(index))];
+  return missing();
+}
+
+const Material& Palette::missing() const {
+  constexpr float kGrey = 200 / 255.0f;
+  static const Material missing_color{{kGrey, kGrey, kGrey}, {kGrey, kGrey, kGrey}, {}, {}, 0, 0};
+  static const Material missing_material{{0, 0, 0}, {1, 1, 1}, {}, {}, 0, 0};
+  return from_materials ? missing_material : missing_color;
+}
+
 // Neither the LPFG manual nor the VLAB tools manual lists lpfg's built-in
 // colormap. Index 0 is the background and black, as in lpfg's window; 1, the
 // turtle's initial colour, is white so a model drawn with no colormap shows.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 
 namespace sylva::geometry {
 
@@ -21,13 +22,31 @@ struct Material {
   float transparency = 0;   // 0 opaque .. 1 invisible
 };
 
+using MaterialBank = std::array<Material, 256>;
+
 struct Palette {
-  std::array<Material, 256> entries{};
+  // Colour indices 0..255: lpfg's only palette, cpfg's colormap or material
+  // set 1 (-m, -m1, -M, -M1).
+  MaterialBank entries{};
+  // cpfg's other colormaps or material sets (-m2 FILE ... -m11 FILE), by
+  // number. cpfg keeps a colour as 256 * n + entry of colormap n, the turtle's
+  // colour k (0..255) being 256 + k (cpfg/interpret.c, irisGL.c
+  // my_getcolormapitem); the turtle here keeps k, so index i outside 0..255
+  // is entry (i + 256) mod 256 of bank (i + 256) / 256.
+  std::map<int, MaterialBank> banks;
   // True when colours came from a material file (lit rendering uses all the
   // material's terms) rather than a colormap (a flat colour per index).
   bool from_materials = false;
 
-  const Material& at(int index) const { return entries[static_cast<std::size_t>(index & 255)]; }
+  static constexpr int kBankSize = 256;
+  // The bank (1: `entries`) and the entry an index names.
+  static int bank_of(int index);
+  static int entry_of(int index);
+
+  const Material& at(int index) const;
+  // What an index of a bank no file gave gets: cpfg's default, grey
+  // (200, 200, 200) in colormap mode, white diffuse with material sets.
+  const Material& missing() const;
   // The colour to draw with when there is no lighting.
   Rgb color(int index) const { return at(index).diffuse; }
   Rgb background() const { return at(0).diffuse; }

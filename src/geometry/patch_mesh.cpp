@@ -5,7 +5,8 @@
 
 namespace sylva::geometry {
 
-void append_patch(Scene& scene, const BezierPatch& patch, const Placement& place, int u_divisions, int v_divisions) {
+void append_patch(Scene& scene, const BezierPatch& patch, const Placement& place, int u_divisions, int v_divisions,
+                  bool textured) {
   const int nu = std::max(u_divisions, 1), nv = std::max(v_divisions, 1);
   const auto base = static_cast<std::uint32_t>(scene.positions.size());
   scene.normals.resize(scene.positions.size(), Vec3{0, 0, 1});
@@ -15,6 +16,7 @@ void append_patch(Scene& scene, const BezierPatch& patch, const Placement& place
       const float u = static_cast<float>(i) / static_cast<float>(nu);
       scene.positions.push_back(place.point(evaluate_patch(patch, u, v)));
       scene.normals.push_back(place.normal(patch_normal(patch, u, v)));
+      if (textured) scene.set_texcoord(static_cast<std::uint32_t>(scene.positions.size() - 1), {v, 1 - u});
     }
   }
   const auto row = static_cast<std::uint32_t>(nu + 1);

@@ -21,6 +21,29 @@ void Scene::add_triangles(TriangleGroup::Kind kind, const std::vector<Vec3>& ver
   groups.push_back(g);
 }
 
+void Scene::append(const Scene& other) {
+  const auto base = static_cast<std::uint32_t>(positions.size());
+  const auto first = static_cast<std::uint32_t>(indices.size());
+  segments.insert(segments.end(), other.segments.begin(), other.segments.end());
+  circles.insert(circles.end(), other.circles.begin(), other.circles.end());
+  spheres.insert(spheres.end(), other.spheres.begin(), other.spheres.end());
+  labels.insert(labels.end(), other.labels.begin(), other.labels.end());
+  normals.resize(positions.size(), Vec3{0, 0, 1});
+  positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+  normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+  normals.resize(positions.size(), Vec3{0, 0, 1});
+  if (!other.texcoords.empty()) {
+    texcoords.resize(base);
+    texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
+  }
+  for (std::uint32_t i : other.indices) indices.push_back(base + i);
+  for (TriangleGroup g : other.groups) {
+    g.first_index += first;
+    groups.push_back(g);
+  }
+  if (!camera) camera = other.camera;
+}
+
 Box Scene::bounds() const {
   Box box;
   for (const Segment& s : segments) {

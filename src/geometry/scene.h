@@ -30,6 +30,17 @@ struct Segment {
   float start_width = 1, end_width = 1;
   int color = 1;
   Provenance from;
+  // The texture (an index into the view file's textures; -1: none) and the
+  // texture's v at both ends, u going round a cylinder from its seam.
+  int texture = -1;
+  float texture_v0 = 0, texture_v1 = 1;
+};
+
+// A texture coordinate: u across the image, v up it (0 at its bottom row,
+// as OpenGL takes it).
+struct TexCoord {
+  float u = 0, v = 0;
+  constexpr bool operator==(const TexCoord&) const = default;
 };
 
 // A filled circle (disc) or a circle outline of width `outline` (CircleB).
@@ -41,6 +52,9 @@ struct Circle {
   bool facing_viewer = false;  // CircleFront*: always in the screen plane
   int color = 1;
   Provenance from;
+  // The turtle's heading: a tessellated circle starts at the turtle's right
+  // (heading x normal) and turns toward the heading, as lpfg's OBJ export does.
+  Vec3 heading{0, 1, 0};
 };
 
 struct Sphere {
@@ -48,6 +62,7 @@ struct Sphere {
   float radius = 1;
   int color = 1;
   Provenance from;
+  int slices = 0;  // the turtle's ContourSides (lpfg: also a sphere's slices); 0: the view's contour sides
 };
 
 struct Label {
@@ -78,6 +93,9 @@ struct TriangleGroup {
   // cpfg's @; @, (CPFG manual 6.3): the colour of the side the triangles'
   // normals point away from; -1: that side is coloured as the front.
   int back_color = -1;
+  // The texture mapped on the triangles (an index into the view file's
+  // textures, with Scene::texcoords); -1: none.
+  int texture = -1;
 };
 
 struct Scene {
@@ -91,6 +109,14 @@ struct Scene {
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> indices;
   std::vector<TriangleGroup> groups;
+  // Texture coordinates of the pool's vertices, where a textured group gave
+  // them: shorter than `positions` when the last vertices have none ((0, 0)).
+  std::vector<TexCoord> texcoords;
+  TexCoord texcoord(std::uint32_t vertex) const { return vertex < texcoords.size() ? texcoords[vertex] : TexCoord{}; }
+  void set_texcoord(std::uint32_t vertex, TexCoord t) {
+    if (texcoords.size() <= vertex) texcoords.resize(vertex + 1);
+    texcoords[vertex] = t;
+  }
 
   // Set by the last Camera module in the string.
   std::optional<CameraPose> camera;
@@ -98,6 +124,10 @@ struct Scene {
   // Adds triangles (vertex indices relative to `vertices`) as one group.
   void add_triangles(TriangleGroup::Kind kind, const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
                      const std::vector<std::uint32_t>& triangle_indices, int color, Provenance from);
+
+  // Appends `other`'s primitives after this Scene's own (its triangle pool
+  // indices moved past this one's).
+  void append(const Scene& other);
 
   bool empty() const {
     return segments.empty() && circles.empty() && spheres.empty() && labels.empty() && groups.empty();

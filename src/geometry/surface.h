@@ -26,6 +26,7 @@ struct BezierSurface {
   float size = 1;           // the surface is scaled by scale / size
   int u_divisions = 8;      // tessellation precision from the view file
   int v_divisions = 8;
+  int texture = -1;         // the view file's texture for it (-1: none)
 };
 
 // Point on a bicubic patch at (u, v) in [0,1]^2, and its normal.

@@ -27,13 +27,11 @@ Vec3 perpendicular(Vec3 axis, Vec3 hint) {
 
 class Builder {
  public:
-  Builder(TriangleMesh& mesh, int sides) : mesh_(mesh), sides_(sides) {
-    angles_.reserve(static_cast<std::size_t>(sides));
-    for (int k = 0; k < sides; ++k) {
-      float a = kTwoPi * static_cast<float>(k) / static_cast<float>(sides);
-      angles_.push_back({std::cos(a), std::sin(a)});
-    }
-  }
+  Builder(TriangleMesh& mesh, const TessellationOptions& options)
+      : mesh_(mesh),
+        line_angles_(angles(options.line_sides > 0 ? options.line_sides : options.contour_sides)),
+        circle_angles_(angles(options.circle_sides > 0 ? options.circle_sides : options.contour_sides)),
+        sphere_angles_(angles(options.contour_sides)) {}
 
   void segment(const Segment& s, LineStyle style) {
     Vec3 axis = s.end - s.start;
@@ -53,28 +51,53 @@ class Builder {
     float r0 = std::max(0.0f, s.start_width) * 0.5f, r1 = std::max(0.0f, s.end_width) * 0.5f;
     if (r0 == 0 && r1 == 0) return;
     // cross(h, u) is the turtle's right (H x L = U): a strip spans heading and
-    // right and faces up; a cylinder's sides go round from the seam at up.
+    // right and faces up; a cylinder's sides go round from the seam at the
+    // turtle's left toward up, as lpfg's OBJ export puts them.
     Vec3 v = cross(h, u);
     MeshPart part = begin_part(MeshPart::Kind::Segment, s.color, s.from, mesh_.indices);
     auto base = vertex_count();
+    const bool textured = s.texture >= 0;
+    part.texture = s.texture;
     if (style == LineStyle::Polygon) {
       add_vertex(s.start - v * r0, u);
       add_vertex(s.start + v * r0, u);
       add_vertex(s.end + v * r1, u);
       add_vertex(s.end - v * r1, u);
+      if (textured) {
+        set_texcoord(base, {0, s.texture_v0});
+        set_texcoord(base + 1, {1, s.texture_v0});
+        set_texcoord(base + 2, {1, s.texture_v1});
+        set_texcoord(base + 3, {0, s.texture_v1});
+      }
       add_quad(base, base + 1, base + 2, base + 3);
+    } else if (textured) {
+      // The texture wraps once round: the seam's vertices come twice, at
+      // u = 0 and u = 1 (lpfg's contour repeats its first point too).
+      auto n = static_cast<std::uint32_t>(line_angles_.size());
+      Vec3 left = -v;
+      for (int end = 0; end < 2; ++end) {
+        for (std::uint32_t k = 0; k <= n; ++k) {
+          const auto& [c, sn] = line_angles_[k % n];
+          Vec3 dir = left * c + u * sn;
+          add_vertex((end ? s.end : s.start) + dir * (end ? r1 : r0), normalized(dir * len + h * (r0 - r1)));
+          set_texcoord(vertex_count() - 1,
+                       {static_cast<float>(k) / static_cast<float>(n), end ? s.texture_v1 : s.texture_v0});
+        }
+      }
+      for (std::uint32_t k = 0; k < n; ++k) add_quad(base + k, base + k + 1, base + n + 2 + k, base + n + 1 + k);
     } else {
       // Open ends: the segments of a branch meet there, and caps would be
       // hidden faces doubling the triangle count.
       // The normal of a tapered side leans toward the narrow end: it is
       // perpendicular to the slanted generator (h*len + dir*(r1-r0)).
-      auto n = static_cast<std::uint32_t>(sides_);
-      for (const auto& [c, sn] : angles_) {
-        Vec3 dir = u * c + v * sn;
+      auto n = static_cast<std::uint32_t>(line_angles_.size());
+      Vec3 left = -v;
+      for (const auto& [c, sn] : line_angles_) {
+        Vec3 dir = left * c + u * sn;
         add_vertex(s.start + dir * r0, normalized(dir * len + h * (r0 - r1)));
       }
-      for (const auto& [c, sn] : angles_) {
-        Vec3 dir = u * c + v * sn;
+      for (const auto& [c, sn] : line_angles_) {
+        Vec3 dir = left * c + u * sn;
         add_vertex(s.end + dir * r1, normalized(dir * len + h * (r0 - r1)));
       }
       for (std::uint32_t k = 0; k < n; ++k) {
@@ -90,17 +113,19 @@ class Builder {
     // none, so it lies in the xy plane, facing +z (the default view's eye).
     Vec3 normal = c.facing_viewer ? Vec3{0, 0, 1} : normalized(c.normal);
     if (length(normal) == 0) normal = {0, 0, 1};
-    Vec3 a = perpendicular(normal, {1, 0, 0});
+    // From the turtle's right toward its heading (lpfg's order); the mesh's
+    // x and y axes for a screen-facing circle.
+    Vec3 a = perpendicular(normal, c.facing_viewer ? Vec3{1, 0, 0} : cross(c.heading, normal));
     Vec3 b = cross(normal, a);
-    auto n = static_cast<std::uint32_t>(sides_);
+    auto n = static_cast<std::uint32_t>(circle_angles_.size());
     if (c.outline > 0) {
       float outer = std::max(0.0f, c.radius + c.outline * 0.5f);
       float inner = std::max(0.0f, c.radius - c.outline * 0.5f);
       if (outer == 0) return;
       MeshPart part = begin_part(MeshPart::Kind::Circle, c.color, c.from, mesh_.indices);
       auto base = vertex_count();
-      for (const auto& [cs, sn] : angles_) add_vertex(c.center + (a * cs + b * sn) * inner, normal);
-      for (const auto& [cs, sn] : angles_) add_vertex(c.center + (a * cs + b * sn) * outer, normal);
+      for (const auto& [cs, sn] : circle_angles_) add_vertex(c.center + (a * cs + b * sn) * inner, normal);
+      for (const auto& [cs, sn] : circle_angles_) add_vertex(c.center + (a * cs + b * sn) * outer, normal);
       for (std::uint32_t k = 0; k < n; ++k) {
         std::uint32_t next = (k + 1) % n;
         add_quad(base + k, base + n + k, base + n + next, base + next);
@@ -112,30 +137,35 @@ class Builder {
     MeshPart part = begin_part(MeshPart::Kind::Circle, c.color, c.from, mesh_.indices);
     auto base = vertex_count();
     add_vertex(c.center, normal);
-    for (const auto& [cs, sn] : angles_) add_vertex(c.center + (a * cs + b * sn) * c.radius, normal);
+    for (const auto& [cs, sn] : circle_angles_) add_vertex(c.center + (a * cs + b * sn) * c.radius, normal);
     for (std::uint32_t k = 0; k < n; ++k) add_triangle(base, base + 1 + k, base + 1 + (k + 1) % n);
     end_part(part, mesh_.indices, mesh_.parts);
   }
 
-  // `sides` slices around the z axis and (sides+1)/2 stacks from pole to
+  // `slices` slices around the y axis and (slices+1)/2 stacks from pole to
   // pole (LPFG manual 5.5): two pole vertices and stacks-1 rings between.
+  // As lpfg's OBJ export places them: poles on the world's y axis, each
+  // ring's first vertex toward -z, longitudes turning toward +x.
   void sphere(const Sphere& s) {
     if (!(s.radius > 0)) return;
-    auto n = static_cast<std::uint32_t>(sides_);
-    auto stacks = static_cast<std::uint32_t>((sides_ + 1) / 2);
+    if (s.slices > 0 && static_cast<std::size_t>(s.slices) != own_sphere_angles_.size())
+      own_sphere_angles_ = angles(s.slices);
+    const auto& ring_angles = s.slices > 0 ? own_sphere_angles_ : sphere_angles_;
+    auto n = static_cast<std::uint32_t>(ring_angles.size());
+    auto stacks = (n + 1) / 2;
     MeshPart part = begin_part(MeshPart::Kind::Sphere, s.color, s.from, mesh_.indices);
     auto base = vertex_count();
-    add_vertex(s.center + Vec3{0, 0, s.radius}, {0, 0, 1});
+    add_vertex(s.center + Vec3{0, s.radius, 0}, {0, 1, 0});
     for (std::uint32_t ring = 1; ring < stacks; ++ring) {
       float polar = std::numbers::pi_v<float> * static_cast<float>(ring) / static_cast<float>(stacks);
-      float z = std::cos(polar), rho = std::sin(polar);
-      for (const auto& [c, sn] : angles_) {
-        Vec3 dir{rho * c, rho * sn, z};
+      float y = std::cos(polar), rho = std::sin(polar);
+      for (const auto& [c, sn] : ring_angles) {
+        Vec3 dir{-rho * sn, y, -rho * c};
         add_vertex(s.center + dir * s.radius, dir);
       }
     }
     std::uint32_t south = vertex_count();
-    add_vertex(s.center - Vec3{0, 0, s.radius}, {0, 0, -1});
+    add_vertex(s.center - Vec3{0, s.radius, 0}, {0, -1, 0});
     auto ring_vertex = [&](std::uint32_t ring, std::uint32_t k) { return base + 1 + (ring - 1) * n + k % n; };
     for (std::uint32_t k = 0; k < n; ++k) add_triangle(base, ring_vertex(1, k), ring_vertex(1, k + 1));
     for (std::uint32_t ring = 1; ring + 1 < stacks; ++ring)
@@ -159,6 +189,7 @@ class Builder {
     if (std::any_of(first, first + count, [&](std::uint32_t i) { return i >= scene.positions.size(); })) return;
     MeshPart part = begin_part(part_kind(g.kind), g.color, g.from, mesh_.indices);
     part.back_color = g.back_color;
+    part.texture = g.texture;
     std::uint32_t base = vertex_count();
     for (auto it = first; it != first + count; ++it) {
       std::uint32_t i = *it;
@@ -166,6 +197,7 @@ class Builder {
         stamp_[i] = group_number_;
         remap_[i] = vertex_count();
         add_vertex(scene.positions[i], i < scene.normals.size() ? scene.normals[i] : Vec3{});
+        if (g.texture >= 0) set_texcoord(remap_[i], scene.texcoord(i));
       }
       mesh_.indices.push_back(remap_[i]);
     }
@@ -219,6 +251,10 @@ class Builder {
     mesh_.positions.push_back(p);
     mesh_.normals.push_back(n);
   }
+  void set_texcoord(std::uint32_t vertex, TexCoord t) {
+    if (mesh_.texcoords.size() <= vertex) mesh_.texcoords.resize(vertex + 1);
+    mesh_.texcoords[vertex] = t;
+  }
   void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
   }
@@ -240,9 +276,21 @@ class Builder {
     if (part.index_count > 0) parts.push_back(part);
   }
 
+  // cos, sin of each of `sides` angles round a circle (at least 3).
+  static std::vector<std::pair<float, float>> angles(int sides) {
+    sides = std::max(3, sides);
+    std::vector<std::pair<float, float>> table;
+    table.reserve(static_cast<std::size_t>(sides));
+    for (int k = 0; k < sides; ++k) {
+      float a = kTwoPi * static_cast<float>(k) / static_cast<float>(sides);
+      table.push_back({std::cos(a), std::sin(a)});
+    }
+    return table;
+  }
+
   TriangleMesh& mesh_;
-  int sides_;
-  std::vector<std::pair<float, float>> angles_;  // cos, sin of each side's angle
+  std::vector<std::pair<float, float>> line_angles_, circle_angles_, sphere_angles_;
+  std::vector<std::pair<float, float>> own_sphere_angles_;  // of the last sphere with its own slices
   std::vector<std::uint32_t> remap_, stamp_;
   std::uint32_t group_number_ = 0;
 };
@@ -254,7 +302,7 @@ class Builder {
 // test and keeps a module's parts together in the files.
 TriangleMesh tessellate(const Scene& scene, const TessellationOptions& options) {
   TriangleMesh mesh;
-  Builder builder(mesh, std::max(3, options.contour_sides));
+  Builder builder(mesh, options);
   std::size_t g = 0, s = 0, c = 0, p = 0;
   constexpr auto kDone = std::numeric_limits<std::uint64_t>::max();
   auto next = [](const auto& list, std::size_t k) -> std::uint64_t {
@@ -274,7 +322,13 @@ TriangleMesh tessellate(const Scene& scene, const TessellationOptions& options) 
     else
       builder.sphere(scene.spheres[p++]);
   }
+  if (!mesh.texcoords.empty()) mesh.texcoords.resize(mesh.positions.size());
   return mesh;
+}
+
+TessellationOptions lpfg_export_options(int contour_sides) {
+  constexpr int kLpfgLineSides = 16;  // 2 x LPFGParams::DefaultContourDivisions
+  return TessellationOptions{LineStyle::Cylinder, contour_sides, kLpfgLineSides, kLpfgLineSides};
 }
 
 const char* kind_name(MeshPart::Kind kind) {

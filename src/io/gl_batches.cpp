@@ -20,12 +20,14 @@ constexpr std::size_t kMaxMaterialRuns = 4096;
 void group_by_material(std::vector<MeshPart>& parts, std::vector<std::uint32_t>& indices) {
   std::size_t changes = 0;
   for (std::size_t i = 1; i < parts.size(); ++i)
-    changes += parts[i].color != parts[i - 1].color || parts[i].back_color != parts[i - 1].back_color;
+    changes += parts[i].color != parts[i - 1].color || parts[i].back_color != parts[i - 1].back_color ||
+               parts[i].texture != parts[i - 1].texture;
   if (changes <= kMaxMaterialRuns) return;
   std::stable_sort(parts.begin(), parts.end(),
                    [](const MeshPart& a, const MeshPart& b) {
-                     return (a.color & 255) != (b.color & 255) ? (a.color & 255) < (b.color & 255)
-                                                               : a.back_color < b.back_color;
+                     return a.color != b.color           ? a.color < b.color
+                            : a.back_color != b.back_color ? a.back_color < b.back_color
+                                                           : a.texture < b.texture;
                    });
   std::vector<std::uint32_t> sorted;
   sorted.reserve(indices.size());
@@ -71,7 +73,7 @@ Batches::Batches(const geometry::Scene& scene, std::vector<geometry::TriangleMes
   for (std::size_t m = 0; m < meshes.size(); ++m)
     for (const MeshPart& p : parts[m])
       add({Draw::Kind::Triangles, static_cast<std::uint32_t>(m), p.first_index, p.index_count,
-           options.lit ? (p.color & 255) : -1, options.lit && p.back_color >= 0 ? (p.back_color & 255) : -1, 1});
+           options.lit ? p.color : -1, options.lit && p.back_color >= 0 ? p.back_color : -1, 1, p.texture});
   for (std::size_t l = 0; l < line_widths_.size(); ++l)
     add({Draw::Kind::Lines, 0, static_cast<std::uint32_t>(2 * l), 2, -1, -1, line_widths_[l]});
 }
@@ -141,7 +143,7 @@ void Batches::add(const Draw& draw) {
   if (!draws_.empty()) {
     Draw& last = draws_.back();
     if (last.kind == draw.kind && last.mesh == draw.mesh && last.material == draw.material &&
-        last.back_material == draw.back_material && last.width == draw.width &&
+        last.back_material == draw.back_material && last.width == draw.width && last.texture == draw.texture &&
         last.first + last.count == draw.first) {
       last.count += draw.count;
       return;

@@ -28,6 +28,7 @@ struct Draw {
   int material = -1;        // lit triangles: the colour index whose material to use
   int back_material = -1;   // lit triangles: the back side's (cpfg's @; @,); -1: as the front
   float width = 1;          // lines: in pixels
+  int texture = -1;         // triangles: the texture mapped on them (-1: none)
 };
 
 struct BatchOptions {

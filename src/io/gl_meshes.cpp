@@ -63,6 +63,9 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
 
   std::vector<int> segment_sides(cylinders ? scene.segments.size() : 0, most);
   std::vector<int> circle_sides(scene.circles.size(), most), sphere_sides(scene.spheres.size(), most);
+  // A sphere drawn after ContourSides has that many slices at most.
+  auto sphere_most = [&](const geometry::Sphere& s) { return s.slices > 0 ? std::max(3, s.slices) : most; };
+  for (std::size_t i = 0; i < sphere_sides.size(); ++i) sphere_sides[i] = sphere_most(scene.spheres[i]);
   if (!every_side) {
     for (std::size_t i = 0; i < segment_sides.size(); ++i) {
       const geometry::Segment& s = scene.segments[i];
@@ -74,12 +77,16 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
       circle_sides[i] = sides_for(pixels(c.radius + std::max(0.0f, c.outline) * 0.5f, c.center), 4, most);
     }
     for (std::size_t i = 0; i < sphere_sides.size(); ++i)
-      sphere_sides[i] = sides_for(pixels(scene.spheres[i].radius, scene.spheres[i].center), 4, most);
+      sphere_sides[i] =
+          sides_for(pixels(scene.spheres[i].radius, scene.spheres[i].center), 4, sphere_most(scene.spheres[i]));
   }
   auto fewer = [&](const std::vector<int>& sides) {
     return std::any_of(sides.begin(), sides.end(), [&](int n) { return n < most; });
   };
-  if (!facing && !pixel_lines && !fewer(segment_sides) && !fewer(circle_sides) && !fewer(sphere_sides))
+  bool fewer_slices = false;
+  for (std::size_t i = 0; i < sphere_sides.size(); ++i)
+    fewer_slices = fewer_slices || sphere_sides[i] < sphere_most(scene.spheres[i]);
+  if (!facing && !pixel_lines && !fewer(segment_sides) && !fewer(circle_sides) && !fewer_slices)
     return {geometry::tessellate(scene, {options.line_style, most})};
 
   // Primitives by the sides they get; the triangle pool goes with the rest.
@@ -89,6 +96,7 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
   full.normals = scene.normals;
   full.indices = scene.indices;
   full.groups = scene.groups;
+  full.texcoords = scene.texcoords;
   if (!pixel_lines) {
     for (std::size_t i = 0; i < scene.segments.size(); ++i) {
       geometry::Segment s = scene.segments[i];
@@ -114,7 +122,9 @@ std::vector<geometry::TriangleMesh> tessellate_for_view(const geometry::Scene& s
   }
   for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
     geometry::Sphere s = scene.spheres[i];
-    s.radius *= area_scale(sphere_sides[i]);
+    const int own = sphere_most(s);
+    s.radius *= static_cast<float>(std::sqrt(polygon_area(own) / polygon_area(sphere_sides[i])));
+    s.slices = 0;  // the mesh's sides
     by_sides[sphere_sides[i]].spheres.push_back(s);
   }
 

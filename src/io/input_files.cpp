@@ -1,5 +1,8 @@
 #include "io/input_files.h"
 
+#include <map>
+
+#include "io/background_scene.h"
 #include "io/contour_file.h"
 #include "io/function_file.h"
 #include "io/input_text.h"
@@ -18,6 +21,57 @@ void replace_earlier(std::optional<std::string>& seen, const std::string& path, 
   if (seen && *seen != path)
     warnings.push_back(path + ": warning: a second " + what + "; it replaces " + *seen + ", as in lpfg and cpfg");
   seen = path;
+}
+
+// cpfg's colour files, each of its number: all colormaps, or all material
+// sets, whichever kind came last (cpfg: "later wins"); the other kind's files
+// are read past.
+geometry::Palette read_palette(InputKind mode, const std::map<int, std::optional<std::string>>& colormaps,
+                               const std::map<int, std::optional<std::string>>& materials,
+                               std::vector<std::string>& warnings) {
+  const bool colormap = mode == InputKind::Colormap;
+  geometry::Palette palette;
+  palette.from_materials = !colormap;
+  bool first = false;
+  for (const auto& [slot, path] : colormap ? colormaps : materials) {
+    if (!path) continue;
+    geometry::Palette bank = colormap ? read_colormap_file(*path) : read_material_file(*path);
+    if (slot == 1) {
+      palette.entries = bank.entries;
+      first = true;
+    } else {
+      palette.banks[slot] = bank.entries;
+    }
+  }
+  // Without a first colormap, colours 0..255 get cpfg's default.
+  if (!first) palette.entries.fill(palette.missing());
+  for (const auto& [slot, path] : colormap ? materials : colormaps) {
+    if (!path) continue;
+    read_input_file(*path, "colour file");
+    warnings.push_back(*path + ": warning: not used: a " + (colormap ? "colormap" : "material file") +
+                       " given later decides that colours come from " +
+                       (colormap ? "colormaps" : "material sets") + ", as in cpfg");
+  }
+  return palette;
+}
+
+// cpfg draws the view file's background scene only with colour files; its
+// materials go to the palette's bank kBackgroundBank.
+void read_background(InputFiles& inputs, const std::string& compiler, bool with_colour_files) {
+  if (!with_colour_files) {
+    inputs.warnings.push_back(inputs.view->path +
+                              ": warning: background scene not drawn: cpfg draws it only with a colormap or "
+                              "material file (-m or -M)");
+    return;
+  }
+  BackgroundScene background = read_background_scene(inputs.view->background_scenes, compiler, inputs.palette.from_materials);
+  geometry::MaterialBank& bank = inputs.palette.banks[kBackgroundBank];
+  for (std::size_t k = 0; k < background.materials.size() && k < bank.size(); ++k) bank[k] = background.materials[k];
+  if (background.materials.size() > bank.size())
+    inputs.warnings.push_back(inputs.view->path + ": warning: only the background scene's first " +
+                              std::to_string(bank.size()) + " materials are kept");
+  inputs.warnings.insert(inputs.warnings.end(), background.warnings.begin(), background.warnings.end());
+  inputs.background = std::move(background.scene);
 }
 
 }  // namespace
@@ -45,6 +99,8 @@ InputKind input_kind_of(const std::string& path) {
 InputFiles read_input_files(const std::vector<InputFile>& files, const std::string& compiler, ViewDialect dialect) {
   InputFiles inputs;
   std::optional<std::string> view_path, animation_path, colour_path;
+  std::map<int, std::optional<std::string>> colormap_banks, material_banks;
+  InputKind colour_mode = InputKind::Unknown;
   for (const InputFile& file : files) {
     const std::string& path = file.path;
     switch (file.kind) {
@@ -57,16 +113,22 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
         inputs.animation = read_animation_file(path);
         break;
       case InputKind::Colormap:
-      case InputKind::Materials:
-        if (file.slot != 1) {
-          read_input_file(path, "colour file");
-          inputs.warnings.push_back(path + ": warning: colour file " + std::to_string(file.slot) +
-                                    " is not used; only the first colormap or material set is");
-          break;
+      case InputKind::Materials: {
+        // cpfg keeps a colormap and a material set per number (-m2, -M3);
+        // lpfg one colour file. The kind given last decides the mode.
+        auto& banks = file.kind == InputKind::Colormap ? colormap_banks : material_banks;
+        if (file.slot == 1) {
+          // One first colour file: a colormap replaces a material set too.
+          replace_earlier(colour_path, path, "colormap or material file", inputs.warnings);
+          colormap_banks.erase(1);
+          material_banks.erase(1);
+        } else {
+          replace_earlier(banks[file.slot], path, "colour file " + std::to_string(file.slot), inputs.warnings);
         }
-        replace_earlier(colour_path, path, "colormap or material file", inputs.warnings);
-        inputs.palette = file.kind == InputKind::Colormap ? read_colormap_file(path) : read_material_file(path);
+        banks[file.slot] = path;
+        colour_mode = file.kind;
         break;
+      }
       case InputKind::Contour:
         inputs.contours.push_back(read_contour_file(path));
         break;
@@ -94,6 +156,9 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
         break;
     }
   }
+  const bool with_colour_files = colour_mode != InputKind::Unknown;
+  if (with_colour_files) inputs.palette = read_palette(colour_mode, colormap_banks, material_banks, inputs.warnings);
+  if (inputs.view && !inputs.view->background_scenes.empty()) read_background(inputs, compiler, with_colour_files);
   if (inputs.view) {
     inputs.warnings.insert(inputs.warnings.end(), inputs.view->warnings.begin(), inputs.view->warnings.end());
     read_view_file_inputs(inputs);

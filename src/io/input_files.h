@@ -71,6 +71,9 @@ struct InputFiles {
   std::vector<geometry::Function> functions;
   // .vset parameters in command-line order; val(name) finds one by name.
   std::vector<Parameter> parameters;
+  // cpfg's background scene (view file "background scene:"), drawn with the
+  // plant; its materials are the palette's bank kBackgroundBank.
+  std::optional<geometry::Scene> background;
   // The view and animation files' warnings, and input files read past.
   std::vector<std::string> warnings;
 

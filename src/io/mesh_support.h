@@ -2,11 +2,12 @@
 // indices a mesh uses, and locale-independent shortest number text.
 #pragma once
 
-#include <array>
 #include <charconv>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "geometry/material.h"
 #include "geometry/tessellation.h"
 #include "lstring/module_types.h"
 
@@ -19,20 +20,21 @@ inline std::string module_name(const ModuleTypes& types, abi::ModuleId id) {
   return "module" + std::to_string(id);
 }
 
-inline int color_slot(int color) { return color & 255; }
-
-// Ascending colour indices (0..255) used by triangle or line parts.
+// Ascending colour indices used by triangle or line parts.
 inline std::vector<int> colors_used(const geometry::TriangleMesh& mesh) {
-  std::array<bool, 256> used{};
-  for (const auto& part : mesh.parts) used[static_cast<std::size_t>(color_slot(part.color))] = true;
-  for (const auto& part : mesh.line_parts) used[static_cast<std::size_t>(color_slot(part.color))] = true;
-  std::vector<int> colors;
-  for (int c = 0; c < 256; ++c)
-    if (used[static_cast<std::size_t>(c)]) colors.push_back(c);
-  return colors;
+  std::set<int> used;
+  for (const auto& part : mesh.parts) used.insert(part.color);
+  for (const auto& part : mesh.line_parts) used.insert(part.color);
+  return {used.begin(), used.end()};
 }
 
-inline std::string material_name(int color) { return "color_" + std::to_string(color_slot(color)); }
+// color_N for the colours of the first colormap (0..255); color_B_N for
+// entry N of cpfg's colormap or material set B (-m2 ...).
+inline std::string material_name(int color) {
+  if (color >= 0 && color < geometry::Palette::kBankSize) return "color_" + std::to_string(color);
+  return "color_" + std::to_string(geometry::Palette::bank_of(color)) + "_" +
+         std::to_string(geometry::Palette::entry_of(color));
+}
 
 // Shortest text that reads back to the same float, whatever the C locale.
 inline void append_number(std::string& out, float value) {

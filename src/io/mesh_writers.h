@@ -19,6 +19,7 @@
 
 #include "geometry/material.h"
 #include "geometry/tessellation.h"
+#include "io/texture_image.h"
 #include "lstring/module_types.h"
 
 namespace sylva::io {
@@ -41,7 +42,10 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
 // uint32: first element (triangle or line, counted within the primitive),
 // element count, module index, module id. The mesh's extras hold
 // {"sylva_module_names": [...]}: module names by module id.
+// Textured parts (MeshPart::texture, an index into `textures`) get a
+// material of their own whose base colour texture is that image, embedded
+// as PNG, with TEXCOORD_0 from the mesh's texture coordinates.
 void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types);
+               const ModuleTypes& types, const std::vector<TextureImage>& textures = {});
 
 }  // namespace sylva::io

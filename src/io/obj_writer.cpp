@@ -60,7 +60,7 @@ void append_parts(std::string& out, const std::vector<MeshPart>& parts, const st
                        previous->from.module_id == part.from.module_id;
     if (!same_module) out += "g " + group_name(types, part.from) + "\n";
     // After every `g`: readers differ on whether a material outlives a group.
-    if (!same_module || mesh_support::color_slot(previous->color) != mesh_support::color_slot(part.color))
+    if (!same_module || previous->color != part.color)
       out += "usemtl " + mesh_support::material_name(part.color) + "\n";
     for (std::uint32_t k = 0; k + per <= part.index_count; k += per) {
       out += element;

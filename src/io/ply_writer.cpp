@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -35,14 +36,19 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
   for (const MeshPart& part : mesh.parts) face_count += part.index_count / 3;
   for (const MeshPart& part : mesh.line_parts) edge_count += part.index_count / 2;
 
+  auto rgba_of = [&](int color) {
+    const geometry::Material& m = palette.at(color);
+    return std::array<std::uint8_t, 4>{channel(m.diffuse.r), channel(m.diffuse.g), channel(m.diffuse.b),
+                                       channel(1 - m.transparency)};
+  };
   // A vertex takes its part's colour; one in no part keeps colour index 1.
-  std::vector<std::uint8_t> vertex_color(vertex_count, 1);
+  std::vector<std::array<std::uint8_t, 4>> vertex_rgba(vertex_count, rgba_of(1));
   std::set<abi::ModuleId> modules;
   auto colour_vertices = [&](const std::vector<MeshPart>& parts, const std::vector<std::uint32_t>& indices) {
     for (const MeshPart& part : parts) {
       modules.insert(part.from.module_id);
-      for (std::uint32_t k = 0; k < part.index_count; ++k)
-        vertex_color[indices[part.first_index + k]] = static_cast<std::uint8_t>(mesh_support::color_slot(part.color));
+      const auto rgba = rgba_of(part.color);
+      for (std::uint32_t k = 0; k < part.index_count; ++k) vertex_rgba[indices[part.first_index + k]] = rgba;
     }
   };
   colour_vertices(mesh.parts, mesh.indices);
@@ -64,16 +70,11 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
   out += "end_header\n";
   out.reserve(out.size() + vertex_count * 28 + face_count * 19 + edge_count * 14);
 
-  std::array<std::array<std::uint8_t, 4>, 256> rgba;
-  for (std::size_t c = 0; c < 256; ++c) {
-    const geometry::Material& m = palette.at(static_cast<int>(c));
-    rgba[c] = {channel(m.diffuse.r), channel(m.diffuse.g), channel(m.diffuse.b), channel(1 - m.transparency)};
-  }
   for (std::size_t v = 0; v < vertex_count; ++v) {
     const geometry::Vec3& p = mesh.positions[v];
     geometry::Vec3 n = v < mesh.normals.size() ? mesh.normals[v] : geometry::Vec3{};
     for (float f : {p.x, p.y, p.z, n.x, n.y, n.z}) put(out, f);
-    out.append(reinterpret_cast<const char*>(rgba[vertex_color[v]].data()), 4);
+    out.append(reinterpret_cast<const char*>(vertex_rgba[v].data()), 4);
   }
   for (const MeshPart& part : mesh.parts) {
     for (std::uint32_t k = 0; k + 3 <= part.index_count; k += 3) {

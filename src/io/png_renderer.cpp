@@ -16,6 +16,7 @@
 #include "io/gl_batches.h"
 #include "io/gl_meshes.h"
 #include "io/gl_shadows.h"
+#include "io/raster_labels.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
@@ -161,6 +162,7 @@ void main() {
   clip.z = depth * clip.w;
   gl_Position = clip;
   gl_FrontColor = gl_Color;
+  gl_TexCoord[0] = gl_MultiTexCoord0;  // fixed-function texturing reads it
 }
 )";
     const GLuint shader = glCreateShader(GL_VERTEX_SHADER);
@@ -204,12 +206,13 @@ void main() {
 class SceneDrawer {
  public:
   SceneDrawer(const gl::Batches& batches, const geometry::Palette& palette, bool lit, bool string_order,
-              float polygon_line_width)
+              float polygon_line_width, const std::vector<GLuint>& textures)
       : batches_(batches),
         palette_(palette),
         lit_(lit),
         string_order_(string_order),
-        polygon_line_width_(polygon_line_width) {}
+        polygon_line_width_(polygon_line_width),
+        textures_(textures) {}
 
   void draw() const {
     constexpr std::uint32_t kLines = ~0u;  // bound: the lines rather than a mesh
@@ -231,7 +234,19 @@ class SceneDrawer {
         }
         if (lit_ && (d.material != material || d.back_material != back_material))
           set_materials(palette_, material = d.material, back_material = d.back_material);
+        const bool textured = d.texture >= 0 && static_cast<std::size_t>(d.texture) < textures_.size() &&
+                              !mesh.mesh->texcoords.empty();
+        if (textured) {
+          glEnable(GL_TEXTURE_2D);
+          glBindTexture(GL_TEXTURE_2D, textures_[static_cast<std::size_t>(d.texture)]);
+          glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+          glTexCoordPointer(2, GL_FLOAT, sizeof(geometry::TexCoord), mesh.mesh->texcoords.data());
+        }
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, mesh.indices.data() + d.first);
+        if (textured) {
+          glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+          glDisable(GL_TEXTURE_2D);
+        }
       } else {
         if (bound != kLines) {
           // Pixel lines have no surface to light: they keep their flat colour.
@@ -287,6 +302,38 @@ class SceneDrawer {
   const geometry::Palette& palette_;
   bool lit_, string_order_;
   float polygon_line_width_;
+  const std::vector<GLuint>& textures_;
+};
+
+// The textures as OpenGL textures (0 for an empty image), deleted with the object.
+class GlTextures {
+ public:
+  explicit GlTextures(const std::vector<TextureImage>& images) : names_(images.size(), 0) {
+    for (std::size_t i = 0; i < images.size(); ++i) {
+      const TextureImage& image = images[i];
+      if (image.width <= 0 || image.height <= 0) continue;
+      glGenTextures(1, &names_[i]);
+      glBindTexture(GL_TEXTURE_2D, names_[i]);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  ~GlTextures() {
+    for (GLuint n : names_)
+      if (n) glDeleteTextures(1, &n);
+  }
+  GlTextures(const GlTextures&) = delete;
+  GlTextures& operator=(const GlTextures&) = delete;
+  const std::vector<GLuint>& names() const { return names_; }
+
+ private:
+  std::vector<GLuint> names_;
 };
 
 // The camera's image, box-filtered down by `factor` and turned top row first.
@@ -345,7 +392,8 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
   OffscreenContext context(width * factor, height * factor);
   const float polygon_line_width =
       render.mode == Mode::Wireframe ? std::max(render.wireframe_line_width, 1e-3f) * static_cast<float>(factor) : 1;
-  const SceneDrawer drawer(batches, palette, lit, string_order, polygon_line_width);
+  const GlTextures textures(settings.textures);
+  const SceneDrawer drawer(batches, palette, lit, string_order, polygon_line_width, textures.names());
 
   std::optional<gl::LightCamera> shadow_light;
   std::optional<gl::ShadowMapTexture> shadow_map;
@@ -393,7 +441,9 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
   glFinish();
   const GLenum error = glGetError();
   if (error == GL_OUT_OF_MEMORY) throw ModelError("out of memory rendering the image");
-  return read_image(context, factor);
+  Image image = read_image(context, factor);
+  draw_labels(image, scene.labels, palette, camera, settings.label_font);
+  return image;
 }
 
 }  // namespace sylva::io

@@ -12,6 +12,8 @@
 #include "geometry/scene.h"
 #include "geometry/tessellation.h"
 #include "geometry/vec3.h"
+#include "io/label_font.h"
+#include "io/texture_image.h"
 #include "io/view_file.h"
 
 namespace sylva::io {
@@ -48,14 +50,21 @@ struct Image {
 //    (at most 4) and averages it down.
 //  - Shadows are cast from the first directional or spot light only, and
 //    multiply what lies in them by the shadow map's colour.
+//  - Labels are drawn last, over everything, in `label_font` (see
+//    raster_labels.h).
 struct ImageSettings {
   RenderSettings render;
   std::vector<Light> lights;
   int contour_sides = 16;  // of cylinders, discs and spheres; < 3 counts as 3
+  LabelFont label_font;
+  // The view file's textures, by id: multiplied into the colour of the
+  // triangles that name them (OpenGL's modulate, lpfg's and cpfg's default),
+  // nearest texel, repeating past the edges. Ids with no image draw untextured.
+  std::vector<TextureImage> textures;
 };
 
 // Draws `scene` through the camera of `view` into a width x height image on
-// the palette's background (colour index 0). Labels are not drawn. Throws
+// the palette's background (colour index 0). Throws
 // ModelError when OpenGL cannot be set up or the image is too large for it.
 Image render_image(const geometry::Scene& scene, const geometry::Palette& palette, const geometry::ViewParameters& view,
                    const ImageSettings& settings, int width, int height);

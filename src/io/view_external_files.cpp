@@ -40,10 +40,8 @@ void Parser::surface(WordReader& in) {
     if (numbers.size() == 1) s.texture = numbers[0];
     if (numbers.size() >= 2) s.s_divisions = numbers[0], s.t_divisions = numbers[1];
     if (numbers.size() == 3) s.texture = numbers[2];
-    if (!in.at_end()) {
-      Word tw = in.next("a texture file");
-      warn(tw, "texture file '" + tw.text + "' of a surface is not supported yet; ignored");
-    }
+    // Its texture goes after the texture: commands' (which @Tx numbers).
+    if (!in.at_end()) s.texture_path = resolve_beside(view_.path, in.next("a texture file").text);
   } else {
     if (!in.at_end()) s.scale = positive(in, "the surface scale");
     if (!in.at_end()) {
@@ -59,6 +57,50 @@ void Parser::surface(WordReader& in) {
     }
   }
   view_.surfaces.push_back(s);
+}
+
+// lpfg: "texture: file" (ids from 0, LPFG manual 8.1.5); cpfg: subcommands
+// "texture: F: file E: mode S: R: ratio H: filter L: filter" (ids from 1 in
+// @Tx, CPFG manual 8.1.7). Only the file is used; the other subcommands are
+// read and said to be ignored.
+void Parser::texture(WordReader& in) {
+  const Word first = in.next("an image file name or F:");
+  if (first.text.size() < 2 || first.text.back() != ':') {
+    view_.textures.push_back(resolve_beside(view_.path, first.text));
+    return;
+  }
+  std::string file;
+  for (Word key = first;; key = in.next("a texture subcommand")) {
+    const std::string k = to_lower(key.text);
+    if (k == "f:") {
+      file = in.next("a texture file name").text;
+    } else if (k == "s:") {
+      warn(key, "texture subcommand S: (one texture per surface) ignored");
+    } else if (k == "e:" || k == "r:" || k == "h:" || k == "l:") {
+      const Word value = in.next("the value of " + key.text);
+      if (k == "e:" || k == "r:") warn(key, "texture subcommand " + key.text + " " + value.text + " ignored");
+    } else {
+      in.fail(key, "expected a texture subcommand (F:, E:, S:, R:, H: or L:), found '" + key.text + "'");
+    }
+    if (in.at_end()) break;
+  }
+  if (file.empty()) in.fail(first, "a cpfg texture needs its file (F: file)");
+  view_.textures.push_back(resolve_beside(view_.path, file));
+}
+
+// cpfg's "background scene: file" (CPFG manual 8.1.4, 8.3); cpfg splits the
+// rest of the line into several files at blanks, commas and semicolons.
+void Parser::background_scene(WordReader& in) {
+  const std::string names = in.rest_of_line("a background scene file");
+  std::string name;
+  for (char c : names + " ") {
+    if (c == ' ' || c == '\t' || c == ',' || c == ';') {
+      if (!name.empty()) view_.background_scenes.push_back(resolve_beside(view_.path, name));
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
 }
 
 void Parser::mesh(WordReader& in) {

@@ -81,7 +81,7 @@ const std::map<std::string, Parser::Entry>& Parser::commands() {
       {"environment display", {{}, {nullptr, "it only orders cpfg's drawing on screen"}}},
       {"rayshade objects", {{}, {nullptr, "rayshade output is not supported"}}},
       {"rayshade scale", {{}, {nullptr, "rayshade output is not supported"}}},
-      {"background scene", {{}, {nullptr, "background scenes are not drawn yet"}}},
+      {"background scene", {{}, {&P::background_scene}}},
       // The turtle.
       {"contour sides", {{&P::contour_sides}, {&P::contour_sides}}},
       {"polygonization level", {{}, {&P::polygonization_level}}},
@@ -207,9 +207,12 @@ void Parser::set_all_views(const std::function<void(geometry::ViewParameters&)>&
   for (auto& [id, v] : view_.views) set(v);
 }
 
-void Parser::texture(WordReader& in) { view_.textures.push_back(resolve_beside(view_.path, in.next("an image file name").text)); }
-
 void Parser::finish() {
+  for (SurfaceCommand& s : view_.surfaces) {
+    if (s.texture_path.empty()) continue;
+    s.texture = static_cast<int>(view_.textures.size());
+    view_.textures.push_back(s.texture_path);
+  }
   if (!cpfg()) {
     // lpfg: both distances must be given to have an effect (LPFG manual 8.1.1).
     if (front_ && back_)

@@ -83,6 +83,7 @@ struct SurfaceCommand {
   float scale = 1;
   int s_divisions = 0, t_divisions = 0;  // 0: the surface's default
   int texture = -1;                      // -1: none
+  std::string texture_path;              // cpfg's texfile, added to the textures at the end
   int line = 0, column = 0;              // of the file name, for messages
 };
 
@@ -154,6 +155,7 @@ struct ViewFile {
   std::vector<SurfaceCommand> surfaces;
   std::vector<MeshCommand> meshes;
   std::vector<std::string> textures;  // paths relative to the view file's folder; ids from 0
+  std::vector<std::string> background_scenes;  // cpfg's background scene files (io/background_scene.h)
   // cpfg's contours, functions and curves, in the file's order; read by
   // read_input_files (io/view_file_inputs.h).
   std::vector<ContourCommand> contour_files;

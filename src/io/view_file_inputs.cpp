@@ -24,6 +24,7 @@ geometry::BezierSurface load_surface(const SurfaceCommand& command) {
   geometry::BezierSurface surface = read_surface_file(command.path);
   // Surface(id, s) scales by s * (view-file scale) / size.
   surface.size /= command.scale;
+  surface.texture = command.texture;
   if (command.s_divisions > 0) {
     surface.u_divisions = command.s_divisions;
     surface.v_divisions = command.t_divisions;

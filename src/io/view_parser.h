@@ -122,10 +122,11 @@ class Parser {
   void scale_multiplier(WordReader& in);
   void twist_of_cylinders(WordReader& in);
 
-  // External files (view_external_files.cpp; texture stays in view_file.cpp).
+  // External files (view_external_files.cpp).
   void surface(WordReader& in);
   void mesh(WordReader& in);
   void texture(WordReader& in);
+  void background_scene(WordReader& in);
   void contour(WordReader& in);
   void function(WordReader& in);
   void function_set(WordReader& in);

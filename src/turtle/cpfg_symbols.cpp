@@ -174,6 +174,16 @@ constexpr Vec3 kVertical{0, 1, 0};
 // cpfg's colour map has 256 entries; increments wrap around it.
 int wrap_color(int c) { return ((c % 256) + 256) % 256; }
 
+// cpfg's ; and , (cpfg/interpret.c): the colour is wrapped once, upward past
+// 255 by ; and downward below 0 by , so ;(600) names entry 88 of colormap 2
+// (-m2) while ;(300) is entry 44 of colormap 1. Colormap 0 (a colour below 0
+// after ;) is not kept: such colours wrap into colormap 1.
+int step_color(int c, bool up) {
+  if (up && c > 255) c -= 256;
+  if (!up && c < 0) c += 256;
+  return c < 0 ? wrap_color(c) : c;
+}
+
 }  // namespace
 
 void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 value, bool in_string) {
@@ -287,9 +297,10 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     }
     case O::ColorUp:
     case O::ColorDown:
-      state_.color = wrap_color(n > 0 ? int_param(p, 0)
+      state_.color = step_color(n > 0 ? int_param(p, 0)
                                       : state_.color + (op == O::ColorUp ? settings_.color_increment
-                                                                         : -settings_.color_increment));
+                                                                         : -settings_.color_increment),
+                                op == O::ColorUp);
       break;
 
     // With a parameter (the curve type), { } and . are cpfg's generalized
@@ -475,7 +486,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::BackColorDown: {
       const int current = state_.back_color >= 0 ? state_.back_color : state_.color;
       const int by = op == O::BackColorUp ? settings_.back_color_increment : -settings_.back_color_increment;
-      state_.back_color = wrap_color(n > 0 ? int_param(p, 0) : current + by);
+      state_.back_color = step_color(n > 0 ? int_param(p, 0) : current + by, op == O::BackColorUp);
       if (trace_) *trace_ += " back colour " + std::to_string(state_.back_color);
       break;
     }

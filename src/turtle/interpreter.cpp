@@ -81,6 +81,14 @@ void TurtleInterpreter::Impl::add_segment(Vec3 from, Vec3 to) {
   s.start_width = s.end_width = state_.width;
   s.color = state_.color;
   s.from = from_;
+  if (state_.texture >= 0) {
+    // lpfg's cylinder lines: v runs on by TextureVCoeff per unit of length,
+    // starting again below 1 (gencyltrtl.cpp).
+    s.texture = state_.texture;
+    s.texture_v0 = state_.texture_v_at;
+    s.texture_v1 = state_.texture_v_at + length(to - from) * state_.texture_v;
+    state_.texture_v_at = s.texture_v1 > 1 ? s.texture_v1 - 1 : s.texture_v1;
+  }
   scene_->segments.push_back(s);
 }
 

@@ -64,7 +64,9 @@ struct TurtleInterpreter::Impl {
   void start_polygon();
   void polygon_vertex();
   void end_polygon();
-  void draw_polygon(std::size_t first);
+  void draw_polygon(std::size_t first, const Frame& first_frame);
+  // cpfg's texture coordinates of a polygon's `count` vertices from `base`.
+  void texture_polygon(std::uint32_t base, std::size_t count, const Frame& first_frame);
   void flat_shape(geometry::TriangleGroup::Kind kind, const Vec3* corners, int count);
   // Throws a ModelError naming the module unless 0 <= id < count (surfaces, meshes of the view file).
   void require_view_file_id(const char* module, const char* kind, const char* kinds, int id,
@@ -79,7 +81,9 @@ struct TurtleInterpreter::Impl {
   void add_label(std::string text);
   geometry::Placement placement(Vec3 local_heading, Vec3 local_up, Vec3 contact, Vec3 scale) const;
   void begin_group();
+  // The group takes group_texture_ (then reset to none).
   void end_group(geometry::TriangleGroup::Kind kind);
+  int group_texture_ = -1;
 
   // ---- cylinders.cpp
   void check_contour(int id, const char* module) const;
@@ -131,6 +135,7 @@ struct TurtleInterpreter::Impl {
   struct OpenPolygon {
     std::size_t first = 0;
     Provenance from;
+    Frame first_frame;  // the turtle's at the first vertex (cpfg's texture axes)
   };
   std::vector<OpenPolygon> polygons_;
   std::vector<Vec3> polygon_points_, polygon_ups_;

@@ -1,5 +1,7 @@
 // Circles, spheres, polygons, rhombi, triangles, Bézier surfaces, meshes and
 // labels: the turtle's shapes other than lines and generalized cylinders.
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -7,6 +9,7 @@
 #include "geometry/patch_mesh.h"
 #include "geometry/polygon_triangulation.h"
 #include "support/diagnostic.h"
+
 #include "turtle/interpreter_impl.h"
 #include "turtle/trace.h"
 
@@ -19,6 +22,7 @@ void TurtleInterpreter::Impl::circle(float radius, float outline, bool facing_vi
     geometry::Circle c;
     c.center = state_.position;
     c.normal = state_.frame.up;
+    c.heading = state_.frame.heading;
     c.radius = radius;
     c.outline = outline;
     c.facing_viewer = facing_viewer;
@@ -38,6 +42,7 @@ void TurtleInterpreter::Impl::sphere(float radius) {
     geometry::Sphere s;
     s.center = state_.position;
     s.radius = radius;
+    s.slices = state_.contour_sides;
     s.color = state_.color;
     s.from = from_;
     scene_->spheres.push_back(s);
@@ -59,6 +64,8 @@ void TurtleInterpreter::Impl::end_group(TriangleGroup::Kind kind) {
   g.color = state_.color;
   g.back_color = state_.back_color;
   g.from = from_;
+  g.texture = group_texture_;
+  group_texture_ = -1;
   if (g.index_count > 0) scene_->groups.push_back(g);
   if (trace_) *trace_ += ", " + std::to_string(g.index_count / 3) + " triangles";
 }
@@ -77,6 +84,7 @@ void TurtleInterpreter::Impl::polygon_vertex() {
   }
   polygon_points_.push_back(state_.position);
   polygon_ups_.push_back(state_.frame.up);
+  if (polygon_points_.size() - polygons_.back().first == 1) polygons_.back().first_frame = state_.frame;
   if (trace_) *trace_ += " vertex " + std::to_string(polygon_points_.size() - polygons_.back().first);
 }
 
@@ -90,13 +98,31 @@ void TurtleInterpreter::Impl::end_polygon() {
   const Provenance module = from_;
   from_ = open.from;  // the polygon is the SP's: where it starts
   if (trace_) *trace_ += " polygon of " + std::to_string(polygon_points_.size() - open.first) + " vertices";
-  draw_polygon(open.first);
+  draw_polygon(open.first, open.first_frame);
   from_ = module;
   polygon_points_.resize(open.first);
   polygon_ups_.resize(open.first);
 }
 
-void TurtleInterpreter::Impl::draw_polygon(std::size_t first) {
+// cpfg/textures.c SetPolygonTextureParams: s along the first vertex's right
+// (-L), t along its heading, each stretched over the polygon's extent.
+void TurtleInterpreter::Impl::texture_polygon(std::uint32_t base, std::size_t count, const Frame& first_frame) {
+  const Vec3 s_axis = -first_frame.left, t_axis = first_frame.heading;
+  float min_s = INFINITY, max_s = -INFINITY, min_t = INFINITY, max_t = -INFINITY;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vec3 p = scene_->positions[base + k];
+    min_s = std::min(min_s, dot(p, s_axis)), max_s = std::max(max_s, dot(p, s_axis));
+    min_t = std::min(min_t, dot(p, t_axis)), max_t = std::max(max_t, dot(p, t_axis));
+  }
+  const float ds = max_s > min_s ? 1 / (max_s - min_s) : 0, dt = max_t > min_t ? 1 / (max_t - min_t) : 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vec3 p = scene_->positions[base + k];
+    scene_->set_texcoord(base + static_cast<std::uint32_t>(k), {(dot(p, s_axis) - min_s) * ds, (dot(p, t_axis) - min_t) * dt});
+  }
+  group_texture_ = state_.texture;
+}
+
+void TurtleInterpreter::Impl::draw_polygon(std::size_t first, const Frame& first_frame) {
   const std::size_t count = polygon_points_.size() - first;
   if (!scene_ || count < 3) return;
   const Vec3* points = polygon_points_.data() + first;
@@ -123,6 +149,7 @@ void TurtleInterpreter::Impl::draw_polygon(std::size_t first) {
   if (settings_.auto_normals) scene_->normals.insert(scene_->normals.end(), count, facing);
   else scene_->normals.insert(scene_->normals.end(), polygon_ups_.begin() + static_cast<std::ptrdiff_t>(first),
                               polygon_ups_.end());
+  if (cpfg_ && state_.texture >= 0) texture_polygon(base, count, first_frame);
   begin_group();
   scene_->indices.insert(scene_->indices.end(), triangles_.begin(), triangles_.end());
   end_group(TriangleGroup::Kind::Polygon);
@@ -191,8 +218,14 @@ void TurtleInterpreter::Impl::surface(int id, Vec3 scale, const char* module) {
   const geometry::Placement place = placement(s.heading, s.up, s.contact, scale / size);
   const int nu = state_.u_precision > 0 ? state_.u_precision : s.u_divisions;
   const int nv = state_.v_precision > 0 ? state_.v_precision : s.v_divisions;
+  // lpfg: the turtle's texture, when on, wins over the view file's for the
+  // surface; cpfg: the view file's wins over @Tx.
+  const int texture = cpfg_ ? (s.texture >= 0 ? s.texture : state_.texture)
+                            : (state_.texture >= 0 ? state_.texture : s.texture);
   begin_group();
-  for (const geometry::BezierPatch& patch : s.patches) geometry::append_patch(*scene_, patch, place, nu, nv);
+  for (const geometry::BezierPatch& patch : s.patches)
+    geometry::append_patch(*scene_, patch, place, nu, nv, texture >= 0);
+  group_texture_ = texture;
   end_group(TriangleGroup::Kind::Surface);
 }
 

@@ -44,8 +44,12 @@ struct TurtleState {
   int cylinder = -1;             // index of the open cylinder, -1: none
   std::uint32_t cylinder_serial = 0;  // tells a reused cylinder slot from the one this state knew
 
+  // CurrentTexture (cpfg's @Tx) and TextureVCoeff: the texture (-1: none),
+  // how much of it a unit of F covers along a cylinder, and the v reached so
+  // far (lpfg's _textureV, kept with the branch's state).
   int texture = -1;
   float texture_v = 1;
+  float texture_v_at = 0;
   int u_precision = 0, v_precision = 0;  // 0: the surface's own
 };
 

@@ -140,6 +140,40 @@ TEST(PaletteTest, ColormapOfTheWrongSizeIsAnError) {
   EXPECT_EQ(error_of([&] { io::read_colormap_file(dir + "/none.map"); }), dir + "/none.map: error: cannot open the colormap file");
 }
 
+// cpfg's -m1 a.map -m2 b.map (cpfg/irisGL.c my_getcolormapitem): colour 44
+// is entry 44 of colormap 1; 344 (cpfg's 600) entry 88 of colormap 2; a
+// colormap no file gave is cpfg's grey (200, 200, 200).
+TEST(PaletteTest, SeveralColormapsAsCpfgNumbersThem) {
+  const std::string dir = test::make_temp_dir("colormap-banks");
+  std::string a, b;
+  for (int i = 0; i < 256; ++i) {
+    a += {static_cast<char>(i), 10, 20};
+    b += {static_cast<char>(i), static_cast<char>(200), 30};
+  }
+  const std::string map1 = write_file(dir, "a.map", a), map2 = write_file(dir, "b.map2", b);
+  io::InputFiles in = io::read_input_files(
+      {io::InputFile(map1, io::InputKind::Colormap, 1), io::InputFile(map2, io::InputKind::Colormap, 2)});
+  EXPECT_TRUE(in.warnings.empty());
+  EXPECT_EQ(in.palette.color(44), (geometry::Rgb{44 / 255.0f, 10 / 255.0f, 20 / 255.0f}));
+  EXPECT_EQ(in.palette.color(344), (geometry::Rgb{88 / 255.0f, 200 / 255.0f, 30 / 255.0f}));
+  const float grey = 200 / 255.0f;
+  EXPECT_EQ(in.palette.color(600), (geometry::Rgb{grey, grey, grey}));  // colormap 3: none
+  // Only -m2: the first colormap's colours are grey too.
+  io::InputFiles second = io::read_input_files({io::InputFile(map2, io::InputKind::Colormap, 2)});
+  EXPECT_EQ(second.palette.color(5), (geometry::Rgb{grey, grey, grey}));
+  EXPECT_EQ(second.palette.color(261), (geometry::Rgb{5 / 255.0f, 200 / 255.0f, 30 / 255.0f}));
+  // A material set given after the colormaps wins: the colormaps are read past.
+  std::string record = {3, 0, 10, 20, 30, 40, 50, 60, 0, 0, 0, 0, 0, 0, 0};
+  const std::string mat = write_file(dir, "m.mat", record);
+  io::InputFiles later = io::read_input_files(
+      {io::InputFile(map1, io::InputKind::Colormap, 1), io::InputFile(mat, io::InputKind::Materials, 2)});
+  EXPECT_TRUE(later.palette.from_materials);
+  EXPECT_EQ(later.palette.color(259), (geometry::Rgb{40 / 255.0f, 50 / 255.0f, 60 / 255.0f}));
+  EXPECT_EQ(later.palette.color(3), (geometry::Rgb{1, 1, 1}));  // cpfg's default material
+  ASSERT_EQ(later.warnings.size(), 1u);
+  EXPECT_NE(later.warnings[0].find(map1 + ": warning: not used"), std::string::npos) << later.warnings[0];
+}
+
 TEST(PaletteTest, ReadsMaterialRecords) {
   // id, transparency, ambient, diffuse, emission, specular, shininess
   std::string bytes = {7, 51, 10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 64,

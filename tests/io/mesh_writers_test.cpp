@@ -115,8 +115,11 @@ TEST(Tessellation, CylinderHasTwoRingsOfSidesAndOpenEnds) {
   EXPECT_EQ(mesh.parts[0].color, 2);
   EXPECT_EQ(mesh.parts[0].from.module_index, 12u);
   EXPECT_TRUE(mesh.line_indices.empty());
-  // The seam follows up: the first vertex is at start + up * radius.
-  expect_vec_near(mesh.positions[0], {0, 0, 0.5f});
+  // The seam is at the turtle's left, as in lpfg's OBJ export (then round
+  // toward up): left = up x heading = (-1, 0, 0), the first vertex at
+  // start + left * radius.
+  expect_vec_near(mesh.positions[0], {-0.5f, 0, 0});
+  expect_vec_near(mesh.positions[2], {0, 0, 0.5f});  // a quarter turn on, at up
   // Side area of the inscribed octagonal prism: n * (2 r sin(pi/n)) * length.
   EXPECT_NEAR(part_area(mesh, mesh.parts[0]), 8 * (2 * 0.5 * std::sin(kPi / 8)) * 2, 1e-5);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -140,8 +143,9 @@ TEST(Tessellation, TaperedCylinderNormalsLeanTowardTheNarrowEnd) {
   TriangleMesh mesh = tessellate(scene, LineStyle::Cylinder, 6);
   ASSERT_EQ(mesh.positions.size(), 12u);
   EXPECT_EQ(triangle_count(mesh), 12u);
-  expect_vec_near(mesh.positions[0], {2, 1, 1});
-  expect_vec_near(mesh.positions[6], {1.5f, 1, 4});
+  // left = up x heading = (1, 0, 0) x (0, 0, 1) = (0, -1, 0): the seam.
+  expect_vec_near(mesh.positions[0], {1, 0, 1});
+  expect_vec_near(mesh.positions[6], {1, 0.5f, 4});
   for (std::uint32_t k = 0; k < 6; ++k) {
     Vec3 n = mesh.normals[k];
     Vec3 generator = mesh.positions[k + 6] - mesh.positions[k];
@@ -297,12 +301,35 @@ TEST(Tessellation, UvSphereCountsAndOutwardNormals) {
       expect_vec_near(mesh.normals[v], out / 0.5f);
     }
     expect_consistent_normals(mesh);
+    // The poles on the y axis, as lpfg's OBJ export puts them.
     geometry::Box box = mesh_bounds(mesh);
-    EXPECT_NEAR(box.min.z, 0, 1e-6);
-    EXPECT_NEAR(box.max.z, 1, 1e-6);
+    EXPECT_NEAR(box.min.y, -2.5f, 1e-6);
+    EXPECT_NEAR(box.max.y, -1.5f, 1e-6);
     EXPECT_LE(box.max.x, 1.5f + 1e-6f);
-    EXPECT_GE(box.min.y, -2.5f - 1e-6f);
+    EXPECT_GE(box.min.z, 0 - 1e-6f);
   }
+}
+
+// lpfg's OBJ export of Sphere(1) at the origin with 4 slices (2 stacks),
+// by hand from lpfg/objturtle.cpp: the poles (0, +-1, 0) and one ring on the
+// equator starting at longitude -pi, (sin lon, 0, cos lon) = (0, 0, -1),
+// then (-1, 0, 0), (0, 0, 1), (1, 0, 0). A sphere's own slices (the
+// turtle's ContourSides) win over the view's contour sides.
+TEST(Tessellation, SphereVerticesAsLpfgExportsThem) {
+  Scene scene;
+  Sphere s;
+  s.slices = 4;
+  scene.spheres.push_back(s);
+  TriangleMesh mesh = tessellate(scene, LineStyle::Cylinder, 16);
+  ASSERT_EQ(mesh.positions.size(), 6u);
+  expect_vec_near(mesh.positions[0], {0, 1, 0});
+  expect_vec_near(mesh.positions[1], {0, 0, -1});
+  expect_vec_near(mesh.positions[2], {-1, 0, 0});
+  expect_vec_near(mesh.positions[3], {0, 0, 1});
+  expect_vec_near(mesh.positions[4], {1, 0, 0});
+  expect_vec_near(mesh.positions[5], {0, -1, 0});
+  EXPECT_EQ(triangle_count(mesh), 8u);
+  expect_consistent_normals(mesh);
 }
 
 TEST(Tessellation, TriangleGroupsAreCopiedWithOwnVertices) {
@@ -611,11 +638,11 @@ TEST(MeshPly, ReadsBackWithColoursAndFaceProvenance) {
   }
   for (const char* comment : {"module 0 F", "module 1 Circle", "module 2 Sphere", "module 3 Polygon"})
     EXPECT_NE(std::find(ply.comments.begin(), ply.comments.end(), comment), ply.comments.end()) << comment;
-  // The first vertex is the cylinder's: colour 2, seam at up.
+  // The first vertex is the cylinder's: colour 2, seam at the turtle's left (-x).
   EXPECT_EQ(vertices->records[0].at("red"), std::lround(0.2 * 255));
   EXPECT_EQ(vertices->records[0].at("green"), std::lround(0.6 * 255));
   EXPECT_EQ(vertices->records[0].at("alpha"), 255);
-  EXPECT_FLOAT_EQ(vertices->records[0].at("nz"), 1);
+  EXPECT_FLOAT_EQ(vertices->records[0].at("nx"), -1);
 
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, 0);
@@ -790,7 +817,9 @@ TEST(MeshGlb, EmptyMeshIsAValidFile) {
 TEST(MeshWriters, UnwritablePathThrowsAndLeavesNoFile) {
   Sample s = sample();
   using Writer = void (*)(const std::string&, const TriangleMesh&, const geometry::Palette&, const ModuleTypes&);
-  for (auto [name, write] : {std::pair<const char*, Writer>{"obj", io::write_obj}, {"ply", io::write_ply}, {"glb", io::write_glb}}) {
+  const Writer glb = [](const std::string& path, const TriangleMesh& mesh, const geometry::Palette& palette,
+                        const ModuleTypes& types) { io::write_glb(path, mesh, palette, types); };
+  for (auto [name, write] : {std::pair<const char*, Writer>{"obj", io::write_obj}, {"ply", io::write_ply}, {"glb", glb}}) {
     std::string dir = test::make_temp_dir(std::string("mesh-unwritable-") + name);
     // A missing directory, and a directory where the file should go.
     std::string missing = dir + "/missing/plant." + name;

@@ -455,3 +455,53 @@ TEST(PngWriter, MalformedImageIsAnError) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// A label's text starts at its projected position on the baseline (lpfg's
+// and cpfg's renderText): its pixels, in its colour, lie right of and above
+// the label's point and nowhere left of or below it (descenders aside).
+TEST(PngRenderer, LabelsAreDrawnRightOfAndAboveTheirPosition) {
+  Scene scene;
+  scene.labels.push_back({{0, 0, 0}, "HHHH", 2, module(0)});
+  ImageSettings settings;
+  settings.label_font = io::LabelFont{"DejaVu Sans", 12, true, false};
+  Image image = render(scene, settings, 80, 60);
+  // The view is 4 units high in 60 pixels: the origin is at (40, 30).
+  int red = 0, misplaced = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const Pixel p = image.pixel(x, y);
+      if (p == kBlack) continue;
+      EXPECT_GT(p[0], p[1]) << x << "," << y;  // red, blended into black at the edges
+      ++red;
+      if (x < 40 || y > 30) ++misplaced;
+    }
+  EXPECT_GT(red, 40);
+  EXPECT_EQ(misplaced, 0);
+  // "HHHH" in 16 pixels: the capitals reach about 11 pixels above the baseline.
+  bool high = false;
+  for (int x = 40; x < 80; ++x) high = high || image.pixel(x, 21) != kBlack;
+  EXPECT_TRUE(high);
+}
+
+// lpfg's and cpfg's reading of an X font name (field 2 the family, 3 the
+// weight, 4 the slant, 7 or else 6 the size).
+TEST(PngRenderer, LabelFontFromAnXFontName) {
+  io::LabelFont f = io::parse_x_font("-*-courier-bold-r-*-*-12-*-*-*-*-*-*-*");
+  EXPECT_EQ(f.family, "courier");
+  EXPECT_TRUE(f.bold);
+  EXPECT_FALSE(f.italic);
+  EXPECT_EQ(f.points, 12);
+  io::LabelFont g = io::parse_x_font("-adobe-new_century_schoolbook-medium-italic-normal--*-240-*-*-*-*-*-*");
+  EXPECT_EQ(g.family, "new century schoolbook");
+  EXPECT_FALSE(g.bold);
+  EXPECT_TRUE(g.italic);
+  EXPECT_EQ(g.points, 12);  // fields 7 and 6 are '*': the default size
+  io::LabelFont h = io::parse_x_font("fixed");
+  EXPECT_EQ(h.family, "Times");
+}
+
+}  // namespace
+}  // namespace sylva

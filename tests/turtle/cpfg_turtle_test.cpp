@@ -174,6 +174,25 @@ TEST(CpfgTurtle, ColourWrapsAroundTheColourMapAndDefaultsTo128) {
   EXPECT_EQ(plain.segments[1].color, 129);
 }
 
+// cpfg keeps a colour as 256 * colormap + entry, the turtle's ;(n) as 256 + n
+// (colormap 1) wrapped once: ; subtracts 256 past 256 + 255, , adds 256
+// below 256 (cpfg/interpret.c). So ;(300) is 300: colormap 1, entry 44 (44
+// here); ;(600) is 600: colormap 2, entry 88 (344 here); ,(-20) is 492:
+// colormap 1, entry 236; ,(600) is 856: colormap 3, entry 88 (600 here).
+TEST(CpfgTurtle, ColourIndicesPastTheFirstColormapWrapOnceAsCpfgWrapsThem) {
+  Scene s = draw_cpfg("colour-banks", "F;(300)F;(600)F,(-20)F,(600)F;(255)F;F", "initial color: 1");
+  ASSERT_EQ(s.segments.size(), 7u);
+  EXPECT_EQ(s.segments[1].color, 44);
+  EXPECT_EQ(s.segments[2].color, 344);
+  EXPECT_EQ(geometry::Palette::bank_of(344), 2);
+  EXPECT_EQ(geometry::Palette::entry_of(344), 88);
+  EXPECT_EQ(s.segments[3].color, 236);
+  EXPECT_EQ(s.segments[4].color, 600);
+  EXPECT_EQ(geometry::Palette::bank_of(600), 3);
+  EXPECT_EQ(s.segments[5].color, 255);
+  EXPECT_EQ(s.segments[6].color, 0);  // 256 + 256 > 511: back to 256, entry 0
+}
+
 TEST(CpfgTurtle, ScaleMultipliesSteps) {
   Scene s = draw_cpfg("scale", "F@D(0.5)F@DiF@DdF", "initial scale: 2\nscale multiplier: 3");
   ASSERT_EQ(s.segments.size(), 4u);
