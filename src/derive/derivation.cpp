@@ -139,7 +139,7 @@ void Derivation::begin() {
   c.stop_requested = false;
   c.step = 0;
   c.current_group = c.next_group = 0;
-  c.gillespie_random = 0;  // every run starts as SeedGillespie(0) would
+  c.gillespie_random = abi::kLpfgRandomState;  // every run starts as lpfg's first
   c.gillespie_time = 0;
   c.environment = true;
   steps_done_ = 0;
@@ -188,6 +188,9 @@ void Derivation::step() {
   if (!begun_) begin();
   abi::ControlState& c = control();
   const bool stopped_before = c.stop_requested;
+  // lpfg counts the step before StartEach: StepNo() is the step's number
+  // (from 1) in its StartEach, productions and EndEach.
+  c.step = steps_done_ + 1;
   if (model_.start_each) model_.start_each();
   require_defined_group(model_, c.next_group);
   c.current_group = c.next_group;

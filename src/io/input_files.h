@@ -60,11 +60,12 @@ struct InputFiles {
   // .con files and .cset sets in command-line order (CurrentContour(id)
   // counts from 1: contours[id - 1]).
   std::vector<geometry::Contour> contours;
-  // .func files and .fset sets in command-line order; func(name, x) finds
-  // a function by name.
+  // lpfg's one list of functions, whose ids (from 1) func, tfunc, pfunc and
+  // val take: the functions of the .fset file, those of the .tset file, the
+  // parameters of the .vset file (each a Function with only a name and a
+  // constant), then those of the .func files in command-line order. Of
+  // .fset, .tset and .vset files lpfg reads only the last one given.
   std::vector<geometry::Function> functions;
-  // .vset parameters in command-line order; val(name) finds one by name.
-  std::vector<Parameter> parameters;
   // The view and animation files' warnings, and input files read past.
   std::vector<std::string> warnings;
 

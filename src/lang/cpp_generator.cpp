@@ -398,6 +398,10 @@ class CppGenerator {
     t += "}  // namespace\n\n";
     auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
     t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";
+    // lpfg's ran() starts from its own state, once per loaded model (not per run).
+    if (!model_.cpfg)
+      t += "  static const bool sylva_random_set = (::sylva::rt::control.rand48 = ::sylva::abi::kLpfgRandomState, true);\n"
+           "  (void)sylva_random_set;\n";
     t += "  static ::sylva::abi::ModelDescriptor descriptor = {\n";
     t += "    ::sylva::abi::kAbiVersion, " + quoted(model_.main_file) + ",\n";
     t += "    sylva_modules, " + std::to_string(model_.modules.size()) + ", " +

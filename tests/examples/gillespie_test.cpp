@@ -109,7 +109,8 @@ TEST(ExampleImmigrationDeath, CountAtTheEndTimeIsPoissonWithTheAnalyticMean) {
 // ---------------------------------------------------------------------------
 // Competing decay: 20 modules A, each becoming B at rate 1 or C at rate 3.
 // Each step fires one reaction: the successor records the step it fired in.
-// Every step prints "step tau t" (tau = GillespieTime(), t their sum).
+// Every step prints "step t" (t = GillespieTime(), lpfg's clock: the sum of
+// the times to each reaction so far).
 const char* kCompetingDecay = R"(#include <lpfgall.h>
 #ifndef SEED_STEP
 #define SEED_STEP 1
@@ -123,11 +124,10 @@ module A;
 module B(int);
 module C(int);
 long seed = 1;
-double t;
 derivation length: 20;
-Start: { SeedGillespie(seed); seed += SEED_STEP; t = 0; UseGroup(1); }
+Start: { SeedGillespie(seed); seed += SEED_STEP; UseGroup(1); }
 StartEach: { DRAW(); }
-EndEach: { t += GillespieTime(); Printf("%d %.9g %.17g\n", StepNo(), GillespieTime(), t); }
+EndEach: { Printf("%d %.17g\n", StepNo(), GillespieTime()); }
 axiom: A A A A A A A A A A A A A A A A A A A A;
 ggroup 1:
 A : {
@@ -142,17 +142,17 @@ struct Clock {
   std::vector<double> times;
 };
 
-Clock read_clock(const std::string& messages) {
+// The clock after each step, and the time each step took (from `start`).
+Clock read_clock(const std::string& messages, double start = 0) {
   Clock c;
   std::istringstream in(messages);
   std::string line;
-  // strtod, not >>: the times may be "inf".
   while (std::getline(in, line)) {
     char* at = nullptr;
     std::strtol(line.c_str(), &at, 10);
-    const double tau = std::strtod(at, &at);
-    c.taus.push_back(tau);
-    c.times.push_back(std::strtod(at, nullptr));
+    const double t = std::strtod(at, nullptr);
+    c.taus.push_back(t - (c.times.empty() ? start : c.times.back()));
+    c.times.push_back(t);
   }
   return c;
 }
@@ -171,10 +171,10 @@ TEST(Gillespie, ReactionsAreChosenByPropensityAndTimesAreExponential) {
   for (int r = 0; r < kRuns; ++r) {
     const std::vector<Module> s = parse_modules(runs.run(kModules));
     ASSERT_EQ(s.size(), static_cast<std::size_t>(kModules));
-    // One reaction per step: the steps recorded are 0..19, each once.
+    // One reaction per step: the steps recorded are 1..20, each once.
     std::vector<int> fired = firing_steps(runs.text());
     std::sort(fired.begin(), fired.end());
-    for (int k = 0; k < kModules; ++k) ASSERT_EQ(fired[k], k) << runs.text();
+    for (int k = 0; k < kModules; ++k) ASSERT_EQ(fired[k], k + 1) << runs.text();
     b_counts.push_back(count_named(s, "B"));
     const Clock clock = read_clock(runs.messages);
     ASSERT_EQ(clock.times.size(), static_cast<std::size_t>(kModules)) << runs.messages;
@@ -232,15 +232,40 @@ TEST(Gillespie, TheSameSeedGivesTheSameRunAndOthersDiffer) {
   EXPECT_EQ(with_ran.messages, first_times);
 }
 
-TEST(Gillespie, NoReactionLeftMeansNothingChangesAndAnInfiniteTime) {
+// With no reaction left nothing changes, and lpfg's clock stands still.
+TEST(Gillespie, NoReactionLeftMeansNothingChangesAndTheClockStands) {
   Runs runs(write_model("competing-decay", kCompetingDecay));
   const std::string converted = runs.run(20);
+  const double end = read_clock(runs.messages).times.back();
   runs.messages.clear();
   for (int k = 0; k < 3; ++k) runs.derivation().step();
   EXPECT_EQ(runs.text(), converted);
-  const Clock clock = read_clock(runs.messages);
+  const Clock clock = read_clock(runs.messages, end);
   ASSERT_EQ(clock.taus.size(), 3u) << runs.messages;
-  for (double tau : clock.taus) EXPECT_TRUE(std::isinf(tau) && tau > 0) << runs.messages;
+  for (double tau : clock.taus) EXPECT_EQ(tau, 0) << runs.messages;
+}
+
+// lpfg's generator and order. After SeedGillespie(7) erand48's state is 7;
+// each step draws one number u to choose the reaction (r = u P, less each
+// propensity in string order until r <= 0) and one, u', for the time to it,
+// -ln(1 - u') / P, which GillespieTime() adds up. The string and the clock
+// are lpfg's (lpfg -b on this model, Printf with %.17g): step 1 fires the
+// first A, step 2 the last.
+TEST(Gillespie, LpfgsGeneratorAndOrder) {
+  const std::string model = write_model("lpfg-order", R"(#include <lpfgall.h>
+module A(int);
+module B(int);
+derivation length: 2;
+Start: { SeedGillespie(7); UseGroup(1); }
+EndEach: { Printf("%d %.17g\n", StepNo(), GillespieTime()); }
+axiom: A(1) A(2) A(3) A(4);
+ggroup 1:
+A(n) : { propensity 1 produce B(n); }
+endgroup
+)");
+  Runs runs(model);
+  EXPECT_EQ(runs.run(2), "B(1) A(2) A(3) B(4)");
+  EXPECT_EQ(runs.messages, "1 0.03132275146026426\n2 0.31185679042490339\n");
 }
 
 // Group 0's productions take no part in a Gillespie step; a production of
@@ -256,7 +281,7 @@ module Z;
 module N;
 derivation length: 4;
 Start: { UseGroup(1); }
-StartEach: { if (StepNo() == 3) UseGroup(0); }
+StartEach: { if (StepNo() == 4) UseGroup(0); }
 axiom: X Z A(0);
 X : { produce Y; }
 ggroup 1:
