@@ -82,9 +82,15 @@ inline V2f curveXY(int id, float s) {
 }
 inline V3f curveXYZ(int id, float s) { return sylva::rt::ask_point(sylva::abi::kQueryCurvePoint, id, s, "curveXYZ"); }
 inline V2f curveXYf(int id, float s) { return curveXY(id, s); }
-inline V2d curveXYd(int id, float s) { return V2d(curveXY(id, s)); }
+inline V2d curveXYd(int id, float s) {
+  const V2f p = curveXY(id, s);
+  return V2d(p.x, p.y);
+}
 inline V3f curveXYZf(int id, float s) { return curveXYZ(id, s); }
-inline V3d curveXYZd(int id, float s) { return V3d(curveXYZ(id, s)); }
+inline V3d curveXYZd(int id, float s) {
+  const V3f p = curveXYZ(id, s);
+  return V3d(p.x, p.y, p.z);
+}
 inline V3f curveNormal(int id, float s) {
   return sylva::rt::ask_point(sylva::abi::kQueryCurveNormal, id, s, "curveNormal");
 }
