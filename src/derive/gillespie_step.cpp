@@ -11,9 +11,10 @@ void Derivation::derive_gillespie() {
   // ends. Forward() and Backward() change nothing: one module is rewritten.
   const StringView src = string_.view(types_);
 
-  // Every module offers the reactions of the first production of the group
-  // that matches it and offers any; productions outside the group (group 0's
-  // included) take no part.
+  // As lpfg gathers them: every production of the group that matches a
+  // module offers its reactions, in order, until one that matches offers
+  // none, which ends the module's offers. Productions outside the group
+  // (group 0's included) take no part.
   reactions_.clear();
   struct Gathering {
     ReactionSet*& target;
@@ -24,14 +25,15 @@ void Derivation::derive_gillespie() {
     for (std::uint32_t r : rules_.forward(abi::RuleKind::Production, src.id_at(pos))) {
       const abi::Rule& rule = model_.rules[r];
       if (rule.group != group) continue;
-      const std::size_t offers_before = reactions_.offers();
       reaction_scratch_.clear();
       std::size_t consumed = 0;
+      if (!try_forward(rule, src, pos, reaction_scratch_, reaction_scratch_, false, &consumed)) continue;
+      const std::size_t offers_before = reactions_.offers();
       try_forward(rule, src, pos, reaction_scratch_, reaction_scratch_, true, &consumed);
       if (const std::string warning = reactions_.take_warning(); !warning.empty())
         message(std::string(rule.file) + ":" + std::to_string(rule.line) + ": warning: " + warning +
                 " (Gillespie group " + std::to_string(group) + ")\n");
-      if (reactions_.offers() > offers_before) break;
+      if (reactions_.offers() == offers_before) break;
     }
   }
   gathering_reactions_ = nullptr;
