@@ -217,6 +217,31 @@ Shape(s) : { if (choice >= 0) produce Shape(choice); else produce Shape(s + 1); 
   EXPECT_EQ(r->string(), "Shape(7)\n");
 }
 
+// Modules lpfg declares beyond the manual's drawing modules compile, run
+// and print (lpfg -b's string: the same modules in this order).
+TEST(LpfgEnvironment, LpfgsOtherPredefinedModulesCompileAndRun) {
+  auto r = run("other-modules", R"(#include <lpfgall.h>
+derivation length: 1;
+module A();
+Axiom: A;
+A() : {
+  CameraPosition cp; BsurfaceObjS s; BsurfaceObjM m;
+  produce Orient() Rotate(V3f(0, 0, 1), 30) SetTropismDirection3f(V3f(0, 1, 0)) ContourNormal(V3f(1, 0, 0))
+          Terrain(cp) PovRayStart("x", Instance) BSurface(0, 1) DBSurfaceS(s) DBSurfaceM(m) F(1);
+}
+)");
+  const std::vector<std::string> names = {"Orient",      "Rotate",   "SetTropismDirection3f", "ContourNormal",
+                                          "Terrain",     "PovRayStart", "BSurface", "DBSurfaceS", "DBSurfaceM", "F"};
+  const std::string text = r->string();
+  std::size_t at = 0;
+  for (const std::string& name : names) {
+    at = text.find(name, at);
+    ASSERT_NE(at, std::string::npos) << name << " in " << text.substr(0, 200);
+  }
+  EXPECT_EQ(text.rfind("Orient Rotate((0,0,1),30) SetTropismDirection3f((0,1,0)) ContourNormal((1,0,0)) Terrain(", 0), 0u)
+      << text.substr(0, 200);
+}
+
 // lpfg counts a step before its StartEach (lpfg -b printed this).
 TEST(LpfgEnvironment, StepNoIsTheNumberOfTheStepUnderWay) {
   auto r = run("step-no", R"(#include <lpfgall.h>
