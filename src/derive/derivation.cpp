@@ -192,11 +192,15 @@ void Derivation::step() {
   // (from 1) in its StartEach, productions and EndEach.
   c.step = steps_done_ + 1;
   if (model_.start_each) model_.start_each();
-  require_defined_group(model_, c.next_group);
+  const GroupChoice choice = classify_group(model_, c.next_group);
+  if (choice != GroupChoice::Defined && warned_groups_.insert(c.next_group).second)
+    message(group_warning(model_, c.next_group, choice));
+  if (choice == GroupChoice::OutOfRange) c.next_group = c.current_group;
   c.current_group = c.next_group;
   {
     PassGuard guard(passes_running_);
-    if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
+    if (choice == GroupChoice::Undeclared) next_.assign(string_.data(), string_.size_bytes());
+    else if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
     else if (c.forward) derive_forward();
     else derive_backward();
   }
