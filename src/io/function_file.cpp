@@ -147,4 +147,13 @@ geometry::Function read_cpfg_function_file(const std::string& path, int view_sam
   return function;
 }
 
+std::vector<geometry::Function> read_cpfg_function_set_file(const std::string& path) {
+  return read_gallery<geometry::Function>(path, "func", "function", [](WordReader& in, const std::string& name) {
+    const bool old_format = to_lower(in.peek().text) == "range:";
+    geometry::Function function = read_funcedit(in, name);
+    if (old_format) function.samples = 100;
+    return function;
+  });
+}
+
 }  // namespace sylva::io

@@ -30,5 +30,8 @@ std::vector<geometry::Function> read_timeline_set_file(const std::string& path);
 // cpfg tabulates an "fver" file at its own "samples:" and a "range:" file at
 // the view file's count (none given: -1, every value bisected).
 geometry::Function read_cpfg_function_file(const std::string& path, int view_samples = -1);
+// A function set named by cpfg's view file ("function set: file"): as
+// read_function_set_file, with cpfg's 100 samples for "range:" items.
+std::vector<geometry::Function> read_cpfg_function_set_file(const std::string& path);
 
 }  // namespace sylva::io

@@ -75,6 +75,15 @@ TEST(FunctionFiles, CpfgsSamplesForEachFormat) {
   EXPECT_EQ(io::read_cpfg_function_file(old, 20).samples, 20);
   EXPECT_EQ(io::read_cpfg_function_file(old).samples, -1);
   EXPECT_EQ(io::read_cpfg_function_file(fver, 20).samples, 7);
+  // In a set, cpfg reads a "range:" function with 100 samples.
+  const std::string set = write_file(dir, "s.fset",
+                                     "funcgalleryver 1 1\nitems: 2\n"
+                                     "fver 1 1\nname: f\nsamples: 7\nflip: off\npoints: 4\n0 1\n0.25 0.8\n0.75 0.2\n1 0\n"
+                                     "range: 0.0 1.0\npoints: 4\n0 1\n0.25 0.8\n0.75 0.2\n1 0\n");
+  const std::vector<geometry::Function> functions = io::read_cpfg_function_set_file(set);
+  ASSERT_EQ(functions.size(), 2u);
+  EXPECT_EQ(functions[0].samples, 7);
+  EXPECT_EQ(functions[1].samples, 100);
 }
 
 // lpfg's list: the last .fset's functions, the .tset's, the .vset's
