@@ -242,6 +242,28 @@ A() : {
       << text.substr(0, 200);
 }
 
+// lpfg's functions of a model's settings and groups (lpfg -b printed this).
+TEST(LpfgEnvironment, TheModelsSettingsAreFunctionsToo) {
+  auto r = run("settings", R"(#include <lpfgall.h>
+derivation length: 4;
+ring L-system: 1;
+module A();
+Axiom: A;
+Start: { Printf("%d %d %d %d %d %d\n", DerivationLength(), DecompositionMaxDepth(), InterpretationMaxDepth(), RingLsystem(), NumOfTables(), NumOfViews()); }
+decomposition:
+maximum depth: 3;
+group 2:
+A() : { produce A(); }
+endgroup
+interpretation:
+maximum depth: 2;
+vgroup 1:
+A() : { produce F(1); }
+endgroup
+)");
+  EXPECT_EQ(r->messages, "4 3 2 1 3 2\n");
+}
+
 // lpfg counts a step before its StartEach (lpfg -b printed this).
 TEST(LpfgEnvironment, StepNoIsTheNumberOfTheStepUnderWay) {
   auto r = run("step-no", R"(#include <lpfgall.h>

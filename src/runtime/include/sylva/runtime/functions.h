@@ -66,6 +66,16 @@ inline bool IsForward() { return sylva::rt::control.forward; }
 inline void Environment() { sylva::rt::control.environment = true; }
 inline void NoEnvironment() { sylva::rt::control.environment = false; }
 
+// The model's settings and the number of its groups and vgroups, as lpfg
+// gives them to models (defined with the model: the derivation length, the
+// decomposition and interpretation depths, whether it is a ring L-system).
+int DerivationLength();
+int DecompositionMaxDepth();
+int InterpretationMaxDepth();
+int RingLsystem();
+int NumOfTables();
+int NumOfViews();
+
 // The environment pass can be switched off for the steps to come: lpfg's
 // name for asking whether it is.
 inline bool IgnoreEnvironment() { return !sylva::rt::control.environment; }
