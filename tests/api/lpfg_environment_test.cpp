@@ -118,6 +118,25 @@ TEST(LpfgEnvironment, AModelUsesWhatLpfgsHeadersGiveWithoutAsking) {
             "M 3 4 0 5\n");
 }
 
+// lpfgall.h declares no name that lpfg's does not (Sylva's own are in its
+// namespace), so a model's own functions and types of any other name
+// compile as in lpfg (lpfg -b printed the same).
+TEST(LpfgEnvironment, AModelsOwnNamesDoNotCollide) {
+  auto r = run("own-names", R"(#include <lpfgall.h>
+float curveLength(int id) { return 2.0f * id; }
+int control = 3;
+int request = 4;
+void message(const char* text) { Printf("%s", text); }
+struct Vec3 { float x, y, z; };
+struct Coords3 { int n; };
+derivation length: 1;
+module A();
+Axiom: A;
+Start: { Vec3 v = {1, 2, 3}; Coords3 c = {5}; message("ok "); Printf("%g %d %d %g %d\n", curveLength(2), control, request, v.z, c.n); }
+)");
+  EXPECT_EQ(r->messages, "ok 4 3 4 3 5\n");
+}
+
 // With NOAUTOOVERLOAD a model defines the vector operators itself. (lpfg's
 // own headers do not compile in this mode; the values are worked by hand:
 // q = p + 2p = (3,6,9), Normalize((3,0,4)) = (0.6,0,0.8).)

@@ -94,13 +94,12 @@ inline V3d curveXYZd(int id, float s) {
 inline V3f curveNormal(int id, float s) {
   return sylva::rt::ask_point(sylva::abi::kQueryCurveNormal, id, s, "curveNormal");
 }
-// The curve's length (curveGAL in lpfg).
-inline float curveLength(int id) {
+// The curve's arc length.
+inline float curveGAL(int id) {
   double out[1] = {0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveLength, id, nullptr, out, "curveLength");
+  sylva::rt::ask_inputs(sylva::abi::kQueryCurveLength, id, nullptr, out, "curveGAL");
   return static_cast<float>(out[0]);
 }
-inline float curveGAL(int id) { return curveLength(id); }
 
 // Changing curve `id` for the rest of the run: the curve functions and the
 // generalized cylinders drawn with it see the change. A point set with
