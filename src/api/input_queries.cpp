@@ -33,6 +33,84 @@ bool answer_input_query(void* answers, int query, int id, const double* in, doub
   return static_cast<InputAnswers*>(answers)->answer(query, id, in, out);
 }
 
+struct InputAnswers::Evaluators {
+  std::unique_ptr<geometry::LpfgFunction> lpfg;
+  std::unique_ptr<geometry::CpfgFunction> cpfg;
+  // The interval tfunc maps onto [0,1]: the .tset file's, until pfunc sets it.
+  float low = 0, up = 1;
+};
+
+InputAnswers::InputAnswers(io::InputFiles& files)
+    : files_(files), curves_(std::max(files.contours.size(), files.curves.size())) {}
+
+InputAnswers::~InputAnswers() = default;
+
+bool InputAnswers::answer_function(int query, int id, const double* in, double* out) {
+  if (functions_.size() < files_.functions.size()) {
+    const std::size_t from = functions_.size();
+    functions_.resize(files_.functions.size());
+    for (std::size_t k = from; k < functions_.size(); ++k) {
+      functions_[k].low = files_.functions[k].low;
+      functions_[k].up = files_.functions[k].up;
+    }
+  }
+  if (id < 1 || id > static_cast<int>(files_.functions.size())) return false;
+  const geometry::Function& f = files_.functions[static_cast<std::size_t>(id - 1)];
+  Evaluators& e = functions_[static_cast<std::size_t>(id - 1)];
+  if (query == abi::kQueryParameter) {
+    // lpfg keeps .vset parameters among its functions; a function has no value.
+    if (!f.constant) return false;
+    out[0] = *f.constant;
+    return true;
+  }
+  if (f.constant) return false;  // a parameter has no curve
+  if (query == abi::kQueryFunctionLimits) {
+    e.low = static_cast<float>(in[0]);
+    e.up = static_cast<float>(in[1]);
+    return true;
+  }
+  if (query == abi::kQueryCpfgFunction) {
+    if (!e.cpfg) e.cpfg = std::make_unique<geometry::CpfgFunction>(f);
+    out[0] = e.cpfg->value(in[0]);
+    return true;
+  }
+  if (!e.lpfg) e.lpfg = std::make_unique<geometry::LpfgFunction>(f);
+  float x = static_cast<float>(in[0]);
+  // tfunc, pfunc and funcTangent map x from the function's interval onto [0,1].
+  if (query != abi::kQueryFunction) x = (x - e.low) / (e.up - e.low);
+  if (query == abi::kQueryFunctionTangent) {
+    const geometry::Vec2 t = e.lpfg->tangent(x);
+    out[0] = t.x;
+    out[1] = t.y;
+    out[2] = 0;
+  } else {
+    out[0] = e.lpfg->value(x);
+  }
+  return true;
+}
+
+bool InputAnswers::answer_surface(int query, int id, const double* in, double* out) const {
+  if (id < 0 || id >= static_cast<int>(files_.surfaces.size())) return false;
+  const std::vector<geometry::BezierPatch>& patches = files_.surfaces[static_cast<std::size_t>(id)].patches;
+  if (query == abi::kQuerySurfacePatch) {
+    if (patches.empty()) return false;
+    for (int k = 0; k < 16; ++k) {
+      out[3 * k] = patches.front().points[k].x;
+      out[3 * k + 1] = patches.front().points[k].y;
+      out[3 * k + 2] = patches.front().points[k].z;
+    }
+    return true;
+  }
+  // GetSurfacePoint: point k of patch p is 16 p + k.
+  const int point = static_cast<int>(in[0]);
+  if (point < 0 || point / 16 >= static_cast<int>(patches.size())) return false;
+  const geometry::Vec3 p = patches[static_cast<std::size_t>(point / 16)].points[point % 16];
+  out[0] = p.x;
+  out[1] = p.y;
+  out[2] = p.z;
+  return true;
+}
+
 const std::vector<Vec3>& InputAnswers::curve(int id) {
   std::vector<Vec3>& samples = curves_[static_cast<std::size_t>(id - 1)];
   if (samples.empty()) samples = curve_source()[static_cast<std::size_t>(id - 1)].resample(kCurveSamples);
@@ -78,28 +156,15 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
     case abi::kQueryCurveReset:
       return change_curve(query, id, in);
     case abi::kQueryParameter:
-      if (id < 1 || id > static_cast<int>(inputs.parameters.size())) return false;
-      out[0] = inputs.parameters[static_cast<std::size_t>(id - 1)].value;
-      return true;
     case abi::kQueryFunction:
-    case abi::kQueryFunctionTangent: {
-      if (id < 1 || id > static_cast<int>(inputs.functions.size())) return false;
-      const geometry::Function& f = inputs.functions[static_cast<std::size_t>(id - 1)];
-      if (query == abi::kQueryFunction) {
-        // pfunc: x in [min,max] is mapped onto the function's [0,1].
-        double min = in[1], max = in[2];
-        double x = max > min ? (std::clamp(in[0], min, max) - min) / (max - min) : std::clamp(in[0], 0.0, 1.0);
-        out[0] = f(static_cast<float>(x));
-      } else {
-        const double h = 1e-3;
-        double x = std::clamp(in[0], h, 1.0 - h);
-        double dy = (f(static_cast<float>(x + h)) - f(static_cast<float>(x - h))) / (2 * h);
-        double length = std::sqrt(1 + dy * dy);
-        out[0] = 1 / length;
-        out[1] = dy / length;
-      }
-      return true;
-    }
+    case abi::kQueryTimelineFunction:
+    case abi::kQueryFunctionLimits:
+    case abi::kQueryFunctionTangent:
+    case abi::kQueryCpfgFunction:
+      return answer_function(query, id, in, out);
+    case abi::kQuerySurfacePatch:
+    case abi::kQuerySurfacePoint:
+      return answer_surface(query, id, in, out);
     case abi::kQueryCurvePoint:
     case abi::kQueryCurveNormal: {
       if (id < 1 || id > static_cast<int>(curve_source().size())) return false;
@@ -122,17 +187,6 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
       out[0] = length;
       return true;
     }
-    case abi::kQuerySurfacePatch: {
-      if (id < 0 || id >= static_cast<int>(inputs.surfaces.size()) || inputs.surfaces[id].patches.empty())
-        return false;
-      const geometry::BezierPatch& patch = inputs.surfaces[static_cast<std::size_t>(id)].patches.front();
-      for (int k = 0; k < 16; ++k) {
-        out[3 * k] = patch.points[k].x;
-        out[3 * k + 1] = patch.points[k].y;
-        out[3 * k + 2] = patch.points[k].z;
-      }
-      return true;
-    }
     default:
       return false;
   }
@@ -142,13 +196,6 @@ std::vector<std::string> function_name_defines(const io::InputFiles& inputs) {
   std::vector<std::string> defines;
   for (std::size_t k = 0; k < inputs.functions.size(); ++k)
     if (!inputs.functions[k].name.empty()) defines.push_back(inputs.functions[k].name + "=" + std::to_string(k + 1));
-  return defines;
-}
-
-std::vector<std::string> parameter_name_defines(const io::InputFiles& inputs) {
-  std::vector<std::string> defines;
-  for (std::size_t k = 0; k < inputs.parameters.size(); ++k)
-    defines.push_back(inputs.parameters[k].name + "=" + std::to_string(k + 1));
   return defines;
 }
 

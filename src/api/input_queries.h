@@ -2,7 +2,7 @@
 // GetSurface ...; LPFG manual 6.2) from the files read at start.
 #pragma once
 
-#include <algorithm>
+#include <memory>
 
 #include "io/input_files.h"
 
@@ -14,8 +14,8 @@ namespace sylva {
 // draws the changed ones.
 class InputAnswers {
  public:
-  explicit InputAnswers(io::InputFiles& files)
-      : files_(files), curves_(std::max(files.contours.size(), files.curves.size())) {}
+  explicit InputAnswers(io::InputFiles& files);
+  ~InputAnswers();
   bool answer(int query, int id, const double* in, double* out);
   // Every contour back as read (a new run).
   void restore_curves();
@@ -26,11 +26,17 @@ class InputAnswers {
   const std::vector<geometry::Contour>& curve_source() const {
     return files_.curves.empty() ? files_.contours : files_.curves;
   }
+  // The functions' answers (func, tfunc, pfunc, funcTangent, val; cpfg's func).
+  bool answer_function(int query, int id, const double* in, double* out);
+  bool answer_surface(int query, int id, const double* in, double* out) const;
   // Curve id (from 1) sampled evenly by arc length; empty if no such id.
   const std::vector<geometry::Vec3>& curve(int id);
   bool change_curve(int query, int id, const double* in);
 
   io::InputFiles& files_;
+  // Each function as lpfg and as cpfg evaluate it, made on first use.
+  struct Evaluators;
+  std::vector<Evaluators> functions_;
   std::vector<std::vector<geometry::Vec3>> curves_;
   // The contours as read, kept from the first change on for curveReset.
   std::vector<geometry::Contour> original_contours_;
@@ -39,11 +45,9 @@ class InputAnswers {
 // The ControlState::input_query callback; `answers` is an InputAnswers.
 bool answer_input_query(void* answers, int query, int id, const double* in, double* out);
 
-// "-D name=id" for every function of the input files, as lpfg defines them
-// (ids from 1 in command-line order), so models can write func(name, x).
+// "-D name=id" for every function and parameter of the input files, as lpfg
+// defines them (ids from 1 in lpfg's order, InputFiles::functions), so models
+// can write func(name, x) and val(name).
 std::vector<std::string> function_name_defines(const io::InputFiles& inputs);
-// "-D name=id" for every parameter of the .vset files (ids from 1), so models
-// can write val(name).
-std::vector<std::string> parameter_name_defines(const io::InputFiles& inputs);
 
 }  // namespace sylva

@@ -79,7 +79,6 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   build::BuildOptions build = options.build;
   for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
   for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
-  for (const std::string& define : parameter_name_defines(*inputs_)) build.defines.push_back(define);
   build::BuiltModel built = build::build_model(model_path, build);
   compiled_now_ = built.compiled_now;
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);

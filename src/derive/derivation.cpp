@@ -139,7 +139,7 @@ void Derivation::begin() {
   c.stop_requested = false;
   c.step = 0;
   c.current_group = c.next_group = 0;
-  c.gillespie_random = 0;  // every run starts as SeedGillespie(0) would
+  c.gillespie_random = abi::kLpfgRandomState;  // every run starts as lpfg's first
   c.gillespie_time = 0;
   c.environment = true;
   steps_done_ = 0;
@@ -191,12 +191,19 @@ void Derivation::step() {
   // before StartEach: a run of n steps has n passes, the last one before the
   // last step, so the final string holds what that step produced.
   if (environment_pass_ && c.environment) environment_pass_(*this);
+  // lpfg counts the step after that pass, before StartEach: StepNo() is the
+  // step's number (from 1) in its StartEach, productions and EndEach.
+  c.step = steps_done_ + 1;
   if (model_.start_each) model_.start_each();
-  require_defined_group(model_, c.next_group);
+  const GroupChoice choice = classify_group(model_, c.next_group);
+  if (choice != GroupChoice::Defined && warned_groups_.insert(c.next_group).second)
+    message(group_warning(model_, c.next_group, choice));
+  if (choice == GroupChoice::OutOfRange) c.next_group = c.current_group;
   c.current_group = c.next_group;
   {
     PassGuard guard(passes_running_);
-    if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
+    if (choice == GroupChoice::Undeclared) next_.assign(string_.data(), string_.size_bytes());
+    else if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
     else if (c.forward) derive_forward();
     else derive_backward();
   }

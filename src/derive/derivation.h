@@ -171,6 +171,7 @@ class Derivation {
   std::optional<ModuleString> initial_string_;
   ModuleString interpretation_out_;
   ReactionSet reactions_;
+  std::set<int> warned_groups_;                 // UseGroup numbers already warned about
   ReactionSet* gathering_reactions_ = nullptr;  // set while a Gillespie step runs bodies
   ModuleString reaction_scratch_;               // where those bodies write
   static constexpr double kMaxGrowthReserved = 8;

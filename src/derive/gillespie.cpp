@@ -12,16 +12,13 @@ bool is_gillespie_group(const abi::ModelDescriptor& model, int group) {
 }
 
 double gillespie_uniform(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
+  state = (0x5DEECE66DULL * state + 0xB) & ((1ULL << 48) - 1);
+  return std::ldexp(static_cast<double>(state), -48);
 }
 
 double gillespie_time(double chi, double total_propensity) {
   if (!(total_propensity > 0)) return std::numeric_limits<double>::infinity();
-  return -std::log1p(-chi) / total_propensity;
+  return -(1.0 / total_propensity * std::log(1.0 - chi));
 }
 
 void ReactionSet::clear() {
@@ -29,7 +26,7 @@ void ReactionSet::clear() {
   successors_.clear();
   total_ = 0;
   offers_ = 0;
-  error_.clear();
+  warning_.clear();
 }
 
 void ReactionSet::listen(abi::RuleCall& call, std::size_t begin, std::size_t end) {
@@ -43,10 +40,12 @@ void ReactionSet::listen(abi::RuleCall& call, std::size_t begin, std::size_t end
 void ReactionSet::propose(abi::RuleCall* call, double propensity) {
   ReactionSet& self = *static_cast<ReactionSet*>(call->reactions);
   ++self.offers_;
+  // lpfg passes a propensity as a float (the parameter of its Propensity module).
+  propensity = static_cast<float>(propensity);
   if (!(propensity >= 0) || std::isinf(propensity)) {
-    if (self.error_.empty())
-      self.error_ = "a propensity must be a finite number, 0 or more, but this production offers " +
-                    std::to_string(propensity);
+    if (self.warning_.empty() && !self.warned_)
+      self.warning_ = "a propensity must be a finite number, 0 or more, but this production offers " +
+                      std::to_string(propensity) + "; taken as 0, as lpfg takes it";
     return;
   }
   if (propensity == 0) return;  // a reaction that cannot happen now
@@ -58,14 +57,19 @@ void ReactionSet::propose(abi::RuleCall* call, double propensity) {
   self.total_ += propensity;
 }
 
-const ReactionSet::Reaction& ReactionSet::choose(double u) const {
-  const double target = u * total_;
-  double cumulative = 0;
+std::string ReactionSet::take_warning() {
+  if (warned_ || warning_.empty()) return {};
+  warned_ = true;
+  return warning_;
+}
+
+const ReactionSet::Reaction* ReactionSet::choose(double u) const {
+  double rest = total_ * u;
   for (const Reaction& r : reactions_) {
-    cumulative += r.propensity;
-    if (target < cumulative) return r;
+    rest -= r.propensity;
+    if (rest <= 0.0) return &r;
   }
-  return reactions_.back();  // u * P rounded up to P
+  return nullptr;
 }
 
 }  // namespace sylva::derive

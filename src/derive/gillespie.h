@@ -18,15 +18,14 @@ namespace sylva::derive {
 // Whether `group` is one of the model's Gillespie groups.
 bool is_gillespie_group(const abi::ModelDescriptor& model, int group);
 
-// The generator of Gillespie steps: SplitMix64 (Steele, Lea and Flood 2014),
-// whose whole state is the 64-bit number SeedGillespie(seed) sets, so a seed
-// names a run. Apart from ran(), which keeps drand48's sequence for lpfg's
-// models. Returns a number in [0,1) with 53 random bits.
+// The generator of Gillespie steps, lpfg's: erand48 on its own 48-bit state
+// (SeedGillespie(seed) makes it seed's low 32 bits), apart from ran()'s.
+// Returns a number in [0,1).
 double gillespie_uniform(std::uint64_t& state);
 
-// The time to the next reaction, τ = -ln(1 - χ) / P for χ uniform in [0,1)
-// (the manual prints ln(1 - χ) / P, which is never positive; time runs
-// forward). Infinite when P is 0: no reaction can ever fire.
+// The time to the next reaction, τ = -ln(1 - χ) / P for χ uniform in [0,1),
+// computed as lpfg does (the manual prints ln(1 - χ) / P, which is never
+// positive; time runs forward).
 double gillespie_time(double chi, double total_propensity);
 
 // The reactions offered in one Gillespie step, in string order and, within a
@@ -46,15 +45,17 @@ class ReactionSet {
   // How many reactions bodies have offered since clear() (zero propensities
   // too): a production that offers any gives its module's reactions.
   std::size_t offers() const { return offers_; }
-  // What is wrong with a propensity that cannot be (negative, infinite, not
-  // a number); empty if none.
-  const std::string& error() const { return error_; }
+  // A propensity that cannot be one (negative, infinite, not a number) is
+  // taken as 0, as lpfg takes it: what the first was, the first time one is
+  // offered (empty otherwise and from then on).
+  std::string take_warning();
 
   bool empty() const { return reactions_.empty(); }
   double total_propensity() const { return total_; }
-  // The reaction whose share of the cumulative propensity holds u * P, for u
-  // in [0,1). Requires !empty().
-  const Reaction& choose(double u) const;
+  // The reaction chosen by u in [0,1), as lpfg chooses: r = u * P, less each
+  // reaction's propensity in turn until r is 0 or less. Null if rounding
+  // leaves r above 0 after the last (lpfg then fires none).
+  const Reaction* choose(double u) const;
   const unsigned char* successors() const { return successors_.data(); }
 
  private:
@@ -66,7 +67,8 @@ class ReactionSet {
   // The body now listening.
   std::size_t begin_ = 0, end_ = 0, body_start_ = 0;
   std::size_t offers_ = 0;
-  std::string error_;
+  std::string warning_;
+  bool warned_ = false;
 };
 
 }  // namespace sylva::derive

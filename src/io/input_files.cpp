@@ -7,6 +7,7 @@
 #include "io/function_file.h"
 #include "io/input_text.h"
 #include "io/palette_files.h"
+#include "io/parameter_file.h"
 #include "io/view_file.h"
 #include "io/view_file_inputs.h"
 #include "support/diagnostic.h"
@@ -74,6 +75,38 @@ void read_background(InputFiles& inputs, const std::string& compiler, bool with_
   inputs.background = std::move(background.scene);
 }
 
+// The functions of the input files in lpfg's order (see InputFiles::functions).
+struct FunctionFiles {
+  std::optional<std::string> set, timeline_set, parameters;
+  std::vector<std::string> singles;
+
+  std::vector<geometry::Function> read(std::vector<std::string>& warnings) const {
+    std::vector<geometry::Function> functions;
+    if (set) functions = read_function_set_file(*set);
+    if (timeline_set)
+      for (geometry::Function& f : read_timeline_set_file(*timeline_set)) functions.push_back(std::move(f));
+    if (parameters)
+      for (Parameter& p : read_parameter_file(*parameters)) {
+        geometry::Function constant;
+        constant.name = std::move(p.name);
+        constant.constant = p.value;
+        functions.push_back(std::move(constant));
+      }
+    for (const std::string& path : singles) functions.push_back(read_function_file(path));
+    for (const geometry::Function& f : functions) {
+      // (A file of the older format, without "samples:", says nothing.)
+      if (f.constant || f.samples == 0 ||
+          (f.samples >= geometry::LpfgFunction::kMinSamples && f.samples <= geometry::LpfgFunction::kMaxSamples))
+        continue;
+      const int kept = f.samples < geometry::LpfgFunction::kMinSamples ? geometry::LpfgFunction::kMinSamples
+                                                                       : geometry::LpfgFunction::kMaxSamples;
+      warnings.push_back("function " + f.name + ": warning: " + std::to_string(f.samples) +
+                         " samples; lpfg keeps " + std::to_string(kept));
+    }
+    return functions;
+  }
+};
+
 }  // namespace
 
 turtle::TurtleSettings InputFiles::turtle_settings() const {
@@ -101,6 +134,7 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
   std::optional<std::string> view_path, animation_path, colour_path;
   std::map<int, std::optional<std::string>> colormap_banks, material_banks;
   InputKind colour_mode = InputKind::Unknown;
+  FunctionFiles function_files;
   for (const InputFile& file : files) {
     const std::string& path = file.path;
     switch (file.kind) {
@@ -136,17 +170,16 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
         for (geometry::Contour& c : read_contour_set_file(path)) inputs.contours.push_back(std::move(c));
         break;
       case InputKind::Function:
-        inputs.functions.push_back(read_function_file(path));
+        function_files.singles.push_back(path);
         break;
       case InputKind::FunctionSet:
-        for (geometry::Function& f : read_function_set_file(path)) inputs.functions.push_back(std::move(f));
-        break;
-      case InputKind::Parameters:
-        for (Parameter& p : read_parameter_file(path)) inputs.parameters.push_back(std::move(p));
+        replace_earlier(function_files.set, path, "function set file", inputs.warnings);
         break;
       case InputKind::TimedFunctionSet:
-        read_input_file(path, "timeline function set file");
-        inputs.warnings.push_back(path + ": warning: timeline function sets are not supported; ignored");
+        replace_earlier(function_files.timeline_set, path, "timeline function set file", inputs.warnings);
+        break;
+      case InputKind::Parameters:
+        replace_earlier(function_files.parameters, path, "parameter file", inputs.warnings);
         break;
       case InputKind::Environment:
         break;  // the environment's own (EnvironmentOptions)
@@ -159,6 +192,7 @@ InputFiles read_input_files(const std::vector<InputFile>& files, const std::stri
   const bool with_colour_files = colour_mode != InputKind::Unknown;
   if (with_colour_files) inputs.palette = read_palette(colour_mode, colormap_banks, material_banks, inputs.warnings);
   if (inputs.view && !inputs.view->background_scenes.empty()) read_background(inputs, compiler, with_colour_files);
+  inputs.functions = function_files.read(inputs.warnings);
   if (inputs.view) {
     inputs.warnings.insert(inputs.warnings.end(), inputs.view->warnings.begin(), inputs.view->warnings.end());
     read_view_file_inputs(inputs);

@@ -65,12 +65,14 @@ struct InputFiles {
   // a cpfg view file's "curve:" files. Empty for lpfg, whose curve functions
   // read `contours`.
   std::vector<geometry::Contour> curves;
-  // .func files and .fset sets in command-line order, then a cpfg view
-  // file's "function:" and "function set:" files; func(name, x) finds a
-  // function by name (cpfg names only a function set's, as cpfg does).
+  // lpfg's one list of functions, whose ids (from 1) func, tfunc, pfunc and
+  // val take: the functions of the .fset file, those of the .tset file, the
+  // parameters of the .vset file (each a Function with only a name and a
+  // constant), then those of the .func files in command-line order. Of
+  // .fset, .tset and .vset files lpfg reads only the last one given. Then a
+  // cpfg view file's "function:" and "function set:" files (cpfg names only a
+  // function set's functions, as cpfg does).
   std::vector<geometry::Function> functions;
-  // .vset parameters in command-line order; val(name) finds one by name.
-  std::vector<Parameter> parameters;
   // cpfg's background scene (view file "background scene:"), drawn with the
   // plant; its materials are the palette's bank kBackgroundBank.
   std::optional<geometry::Scene> background;

@@ -77,14 +77,12 @@ void read_functions(InputFiles& inputs) {
     from_set = f.set;
     try {
       if (f.set) {
-        functions = read_function_set_file(f.path);
+        functions = read_cpfg_function_set_file(f.path);
         continue;
       }
-      geometry::Function function = read_function_file(f.path);
       // cpfg samples a file of the older format ("range:") as the view file
       // says; a newer one as it says itself.
-      if (function.samples == 0) function.samples = f.samples;
-      functions.push_back(std::move(function));
+      functions.push_back(read_cpfg_function_file(f.path, f.samples > 0 ? f.samples : -1));
     } catch (const ModelError& e) {
       if (f.set) {
         functions.clear();

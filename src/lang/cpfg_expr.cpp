@@ -472,11 +472,11 @@ inline double sylva_cpfg_biran(double n, double p) {
   for (long k = 0; k < trials; ++k) hits += ::sylva::rt::next_rand48() < p;
   return static_cast<double>(hits);
 }
-inline double sylva_cpfg_func(double id, double x) { return func(static_cast<int>(id), static_cast<float>(x)); }
+inline double sylva_cpfg_func(double id, double x) { return ::sylva::rt::cpfg_func(static_cast<int>(id), x); }
 inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
-inline double sylva_cpfg_curveGAL(double id) { return curveLength(static_cast<int>(id)); }
+inline double sylva_cpfg_curveGAL(double id) { return curveGAL(static_cast<int>(id)); }
 // stop(n) (CPFG manual 5.6): the run ends after this step; without a window
 // to keep drawing in, n = 1 ("draw and continue") ends it the same way.
 inline double sylva_cpfg_stop(double = 0) {

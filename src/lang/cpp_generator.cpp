@@ -1,5 +1,6 @@
 #include "lang/cpp_generator.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace sylva::lang {
@@ -397,7 +398,29 @@ class CppGenerator {
     int_array("sylva_groups", model_.groups);
     t += "}  // namespace\n\n";
     auto fn = [](const std::string& name) { return name.empty() ? std::string("nullptr") : "&" + name; };
+    // lpfg's functions of the model's settings and groups, which its models
+    // may call (lpfgall.h declares them).
+    auto setting = [&](Setting::Kind kind, int otherwise) {
+      return settings_[kind].empty() ? std::to_string(otherwise) : settings_[kind] + "()";
+    };
+    int last_group = 0, last_view = 0;
+    for (int g : model_.groups) last_group = std::max(last_group, g);
+    for (int g : model_.gillespie_groups) last_group = std::max(last_group, g);
+    for (const Rule* rule : rules_) {
+      last_group = std::max(last_group, rule->group);
+      last_view = std::max(last_view, rule->view);
+    }
+    t += "int DerivationLength() { return " + setting(Setting::kDerivationLength, 0) + "; }\n";
+    t += "int DecompositionMaxDepth() { return " + setting(Setting::kDecompositionDepth, 1) + "; }\n";
+    t += "int InterpretationMaxDepth() { return " + setting(Setting::kInterpretationDepth, 1) + "; }\n";
+    t += "int RingLsystem() { return " + setting(Setting::kRing, 0) + "; }\n";
+    t += "int NumOfTables() { return " + std::to_string(last_group + 1) + "; }\n";
+    t += "int NumOfViews() { return " + std::to_string(last_view + 1) + "; }\n";
     t += "extern \"C\" __attribute__((visibility(\"default\"))) const ::sylva::abi::ModelDescriptor* sylva_model_v1() {\n";
+    // lpfg's ran() starts from its own state, once per loaded model (not per run).
+    if (!model_.cpfg)
+      t += "  static const bool sylva_random_set = (::sylva::rt::control.rand48 = ::sylva::abi::kLpfgRandomState, true);\n"
+           "  (void)sylva_random_set;\n";
     t += "  static ::sylva::abi::ModelDescriptor descriptor = {\n";
     t += "    ::sylva::abi::kAbiVersion, " + quoted(model_.main_file) + ",\n";
     t += "    sylva_modules, " + std::to_string(model_.modules.size()) + ", " +

@@ -124,7 +124,8 @@ Translation translate_file(const std::string& model_path, const TranslatorOption
   if (!language.empty() && language != "auto" && language != "lc")
     throw ModelError("unknown model language '" + language + "' (expected cpfg or lc)");
 
-  std::vector<std::string> argv = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1"};
+  // lpfg preprocesses models on Linux with LINUX defined: models test it.
+  std::vector<std::string> argv = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1", "-DLINUX=1"};
   for (const std::string& d : options.defines) argv.push_back("-D" + d);
   argv.push_back("-isystem");
   argv.push_back(options.runtime_include_dir);

@@ -130,7 +130,7 @@ TEST(DynamicCurve, ChangedContourReachesCurveFunctionsAndCylinders) {
                   "derivation length: 3;\n"
                   "module A();\n"
                   "StartEach: {\n"
-                  "  if (StepNo() == 0) {\n"
+                  "  if (StepNo() == 1) {\n"
                   "    Printf(\"%.6f\\n\", curveX(1, 0.1f));\n"
                   "    curveSetPoint(1, 0, 2, 2, 0); curveSetPoint(1, 1, -2, 2, 0);\n"
                   "    curveSetPoint(1, 2, -2, -2, 0); curveSetPoint(1, 3, 2, -2, 0);\n"
@@ -138,8 +138,8 @@ TEST(DynamicCurve, ChangedContourReachesCurveFunctionsAndCylinders) {
                   "    curveRecalculate(1);\n"
                   "    Printf(\"%.6f\\n\", curveX(1, 0.1f));\n"
                   "  }\n"
-                  "  if (StepNo() == 1) { curveReset(1); curveScale(1, 3, 3, 3); Printf(\"%.6f\\n\", curveX(1, 0.1f)); }\n"
-                  "  if (StepNo() == 2) { curveReset(1); Printf(\"%.6f\\n\", curveX(1, 0.1f)); }\n"
+                  "  if (StepNo() == 2) { curveReset(1); curveScale(1, 3, 3, 3); Printf(\"%.6f\\n\", curveX(1, 0.1f)); }\n"
+                  "  if (StepNo() == 3) { curveReset(1); Printf(\"%.6f\\n\", curveX(1, 0.1f)); }\n"
                   "}\n"
                   "axiom: ContourSides(8) CurrentContour(1) SetWidth(2) StartGC F(1) EndGC;\n",
                   {{"square.con", kSquare}});

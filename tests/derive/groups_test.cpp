@@ -79,23 +79,31 @@ TEST(Groups, EmptyGroupIsStillAGroup) {
   EXPECT_EQ(derive_string(model), "A(1)");
 }
 
-// UseGroup of a group the model never defines: an error at the call, a
-// non-zero exit and no output file.
-TEST(Groups, UndefinedGroupIsAnError) {
-  // Line 6 holds the UseGroup(7) call (after the 2 header lines, "int n;", Start and "StartEach: {").
+// UseGroup of a group the model never defines does not stop lpfg: a number
+// past its groups (0 to 3 here) is ignored, one inside them that no group
+// declares (2) is selected and its step applies no productions. lpfg -b on
+// this model: g1 in steps 1, 2 (7 ignored) and 4, nothing in step 3: A(30).
+// Each is a warning at the call (line 6 and 7), once.
+TEST(Groups, UndefinedGroupsAreWarningsAsInLpfg) {
   const std::string model = write_model("undefined",
                                         "int n;\nStart: { n = 0; }\n"
-                                        "StartEach: { n++;\n  if (n == 2) UseGroup(7); else UseGroup(1); }\n"
-                                        "derivation length: 3;\nAxiom: A(0);\n"
-                                        "group 1:\nA(x): { produce A(x + 1); }\nendgroup\n");
+                                        "StartEach: { n++;\n"
+                                        "  if (n == 2 || n == 5) UseGroup(7);\n"
+                                        "  else if (n == 3) UseGroup(2); else UseGroup(1); }\n"
+                                        "derivation length: 5;\nAxiom: A(0);\n"
+                                        "A(x): { produce A(x + 1); }\n"
+                                        "group 1:\nA(x): { produce A(x + 10); }\n"
+                                        "group 3:\nA(x): { produce A(x + 100); }\nendgroup\n");
   const std::string dir = std::filesystem::path(model).parent_path().string();
   const std::string out = dir + "/out.txt";
   const ProcessResult r = run_sylva({"run", model, "--string", out});
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find(model + ":6: error: UseGroup(7) selects group 7, but the model defines no 'group 7:'"),
-            std::string::npos)
-      << r.err;
-  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(out), "A(40)\n");  // step 5 ignores 7 again: group 1
+  const std::string ignored = model + ":6: warning: UseGroup(7) selects no group: the model's groups are 0 to 3";
+  const std::string empty = model + ":7: warning: UseGroup(2) selects group 2, which the model does not declare";
+  EXPECT_NE(r.err.find(ignored), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(ignored), r.err.rfind(ignored)) << "once: " << r.err;
+  EXPECT_NE(r.err.find(empty), std::string::npos) << r.err;
 }
 
 }  // namespace

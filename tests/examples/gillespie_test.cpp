@@ -109,7 +109,8 @@ TEST(ExampleImmigrationDeath, CountAtTheEndTimeIsPoissonWithTheAnalyticMean) {
 // ---------------------------------------------------------------------------
 // Competing decay: 20 modules A, each becoming B at rate 1 or C at rate 3.
 // Each step fires one reaction: the successor records the step it fired in.
-// Every step prints "step tau t" (tau = GillespieTime(), t their sum).
+// Every step prints "step t" (t = GillespieTime(), lpfg's clock: the sum of
+// the times to each reaction so far).
 const char* kCompetingDecay = R"(#include <lpfgall.h>
 #ifndef SEED_STEP
 #define SEED_STEP 1
@@ -123,11 +124,10 @@ module A;
 module B(int);
 module C(int);
 long seed = 1;
-double t;
 derivation length: 20;
-Start: { SeedGillespie(seed); seed += SEED_STEP; t = 0; UseGroup(1); }
+Start: { SeedGillespie(seed); seed += SEED_STEP; UseGroup(1); }
 StartEach: { DRAW(); }
-EndEach: { t += GillespieTime(); Printf("%d %.9g %.17g\n", StepNo(), GillespieTime(), t); }
+EndEach: { Printf("%d %.17g\n", StepNo(), GillespieTime()); }
 axiom: A A A A A A A A A A A A A A A A A A A A;
 ggroup 1:
 A : {
@@ -142,17 +142,17 @@ struct Clock {
   std::vector<double> times;
 };
 
-Clock read_clock(const std::string& messages) {
+// The clock after each step, and the time each step took (from `start`).
+Clock read_clock(const std::string& messages, double start = 0) {
   Clock c;
   std::istringstream in(messages);
   std::string line;
-  // strtod, not >>: the times may be "inf".
   while (std::getline(in, line)) {
     char* at = nullptr;
     std::strtol(line.c_str(), &at, 10);
-    const double tau = std::strtod(at, &at);
-    c.taus.push_back(tau);
-    c.times.push_back(std::strtod(at, nullptr));
+    const double t = std::strtod(at, nullptr);
+    c.taus.push_back(t - (c.times.empty() ? start : c.times.back()));
+    c.times.push_back(t);
   }
   return c;
 }
@@ -171,10 +171,10 @@ TEST(Gillespie, ReactionsAreChosenByPropensityAndTimesAreExponential) {
   for (int r = 0; r < kRuns; ++r) {
     const std::vector<Module> s = parse_modules(runs.run(kModules));
     ASSERT_EQ(s.size(), static_cast<std::size_t>(kModules));
-    // One reaction per step: the steps recorded are 0..19, each once.
+    // One reaction per step: the steps recorded are 1..20, each once.
     std::vector<int> fired = firing_steps(runs.text());
     std::sort(fired.begin(), fired.end());
-    for (int k = 0; k < kModules; ++k) ASSERT_EQ(fired[k], k) << runs.text();
+    for (int k = 0; k < kModules; ++k) ASSERT_EQ(fired[k], k + 1) << runs.text();
     b_counts.push_back(count_named(s, "B"));
     const Clock clock = read_clock(runs.messages);
     ASSERT_EQ(clock.times.size(), static_cast<std::size_t>(kModules)) << runs.messages;
@@ -232,46 +232,72 @@ TEST(Gillespie, TheSameSeedGivesTheSameRunAndOthersDiffer) {
   EXPECT_EQ(with_ran.messages, first_times);
 }
 
-TEST(Gillespie, NoReactionLeftMeansNothingChangesAndAnInfiniteTime) {
+// With no reaction left nothing changes, and lpfg's clock stands still.
+TEST(Gillespie, NoReactionLeftMeansNothingChangesAndTheClockStands) {
   Runs runs(write_model("competing-decay", kCompetingDecay));
   const std::string converted = runs.run(20);
+  const double end = read_clock(runs.messages).times.back();
   runs.messages.clear();
   for (int k = 0; k < 3; ++k) runs.derivation().step();
   EXPECT_EQ(runs.text(), converted);
-  const Clock clock = read_clock(runs.messages);
+  const Clock clock = read_clock(runs.messages, end);
   ASSERT_EQ(clock.taus.size(), 3u) << runs.messages;
-  for (double tau : clock.taus) EXPECT_TRUE(std::isinf(tau) && tau > 0) << runs.messages;
+  for (double tau : clock.taus) EXPECT_EQ(tau, 0) << runs.messages;
 }
 
-// Group 0's productions take no part in a Gillespie step; a production of
-// the group that offers nothing lets the next one offer; nproduce'd modules
-// come before a reaction's; a zero propensity never fires; UseGroup(0)
-// returns to ordinary steps.
-TEST(Gillespie, OnlyTheGroupsProductionsOfferReactions) {
+// lpfg's generator and order. After SeedGillespie(7) erand48's state is 7;
+// each step draws one number u to choose the reaction (r = u P, less each
+// propensity in string order until r <= 0) and one, u', for the time to it,
+// -ln(1 - u') / P, which GillespieTime() adds up. The string and the clock
+// are lpfg's (lpfg -b on this model, Printf with %.17g): step 1 fires the
+// first A, step 2 the last.
+TEST(Gillespie, LpfgsGeneratorAndOrder) {
+  const std::string model = write_model("lpfg-order", R"(#include <lpfgall.h>
+module A(int);
+module B(int);
+derivation length: 2;
+Start: { SeedGillespie(7); UseGroup(1); }
+EndEach: { Printf("%d %.17g\n", StepNo(), GillespieTime()); }
+axiom: A(1) A(2) A(3) A(4);
+ggroup 1:
+A(n) : { propensity 1 produce B(n); }
+endgroup
+)");
+  Runs runs(model);
+  EXPECT_EQ(runs.run(2), "B(1) A(2) A(3) B(4)");
+  EXPECT_EQ(runs.messages, "1 0.03132275146026426\n2 0.31185679042490339\n");
+}
+
+// Which reactions a string offers, as lpfg gathers them (lpfg -b on this
+// model; its clock and the string's last modules printed): group 0's
+// productions take no part in a Gillespie step (X stays until step 4); of
+// A's productions each one that matches offers its reactions, until one that
+// matches offers none: A(0) offers nothing (the first production matches
+// and offers nothing), A(200) offers 1 + 2 + 1; a zero propensity never
+// fires. Seeded with 3, step 1 fires A(200) -> A(-1); after it nothing can
+// fire and the clock stands; UseGroup(0) returns to ordinary steps.
+TEST(Gillespie, EachMatchingProductionOffersUntilOneOffersNone) {
   const std::string model = write_model("group-rules", R"(#include <lpfgall.h>
 module A(int);
 module X;
 module Y;
 module Z;
-module N;
 derivation length: 4;
-Start: { UseGroup(1); }
-StartEach: { if (StepNo() == 3) UseGroup(0); }
-axiom: X Z A(0);
+Start: { UseGroup(1); SeedGillespie(3); }
+StartEach: { if (StepNo() == 4) UseGroup(0); }
+EndEach: { Printf("%d %.17g\n", StepNo(), GillespieTime()); }
+axiom: X Z A(0) A(200);
 X : { produce Y; }
 ggroup 1:
 A(n) : { if (n > 100) propensity 1 produce A(-1); }
-A(n) : { nproduce N; propensity 2 produce A(n + 1); }
+A(n) : { propensity 2 produce A(n + 1); propensity 1 produce A(n + 10); }
 Z : { propensity 0 produce Y; }
 endgroup
 )");
   Runs runs(model);
-  runs.derivation().begin();
-  const char* expected[] = {"X Z A(0)", "X Z N A(1)", "X Z N N A(2)", "X Z N N N A(3)", "Y Z N N N A(3)"};
-  for (int k = 0; k <= 4; ++k) {
-    EXPECT_EQ(runs.text(), expected[k]) << "after step " << k;
-    if (k < 4) runs.derivation().step();
-  }
+  EXPECT_EQ(runs.run(4), "Y Z A(0) A(-1)");
+  EXPECT_EQ(runs.messages,
+            "1 0.05388337720033564\n2 0.05388337720033564\n3 0.05388337720033564\n4 0.05388337720033564\n");
 }
 
 }  // namespace

@@ -279,8 +279,8 @@ TEST(CpfgViewFileInputsTest, FunctionsInOrderASetReplacingThoseBefore) {
   // func(1, x), func(2, x), func(3, x); the missing one is 0 everywhere and
   // keeps the ids after it. Files given by function: are not named.
   ASSERT_EQ(a.functions.size(), 3u);
-  EXPECT_FLOAT_EQ(a.functions[1](0.5f), 0);
-  EXPECT_GT(a.functions[2](0.5f), 0.5f);
+  EXPECT_DOUBLE_EQ(geometry::CpfgFunction(a.functions[1]).value(0.5), 0);
+  EXPECT_GT(geometry::CpfgFunction(a.functions[2]).value(0.5), 0.5);
   EXPECT_TRUE(a.functions[0].name.empty());
   EXPECT_EQ(a.functions[0].samples, 10);  // the file's own, not the view file's 100
   std::string set = write_file(dir, "set.v", "function: first.func\nfunction set: set.fset\n");

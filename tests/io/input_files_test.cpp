@@ -368,14 +368,16 @@ TEST(InputFilesTest, ReadsEveryKindInAnyOrder) {
   ASSERT_TRUE(in.view && in.animation);
   EXPECT_EQ(in.animation->step, 3);
   EXPECT_EQ(in.palette.color(9), (geometry::Rgb{128 / 255.0f, 128 / 255.0f, 128 / 255.0f}));
-  // Contours and functions in command-line order.
+  // Contours in command-line order; functions in lpfg's: the .fset's, then
+  // the .func files'.
   ASSERT_EQ(in.contours.size(), 3u);
   EXPECT_EQ(in.contours[0].name, "wide");
   EXPECT_EQ(in.contours[1].name, "narrow");
   EXPECT_EQ(in.contours[2].name, "cross section");
   ASSERT_EQ(in.functions.size(), 3u);
-  EXPECT_EQ(in.functions[0].name, "width");
-  EXPECT_EQ(in.functions[2].name, "curves_2");
+  EXPECT_EQ(in.functions[0].name, "rise");
+  EXPECT_EQ(in.functions[1].name, "curves_2");
+  EXPECT_EQ(in.functions[2].name, "width");
   // The view file's surfaces, beside it, with its scale and subdivisions.
   ASSERT_EQ(in.surfaces.size(), 2u);
   EXPECT_EQ(in.surfaces[0].name, "leaf");

@@ -95,12 +95,14 @@ std::string mouse_error_of(const std::string& text) {
 }
 
 const std::string kAllMouseFields =
-    "viewNum=1,viewX=2,viewY=3,atFront=(0,0,0),atRear=(0,0,0),atMiddle=(0,0,0),lbDown=0,lbPushed=1,lbReleased=0";
+    "viewNum=1,viewX=2,viewY=3,atFront=(0,0,0),atRear=(0,0,0),atMiddle=(0,0,0),selectDepth=0.5,"
+    "selectPoint=(1,2,3),keypressed=0,lbDown=0,lbPushed=1,lbReleased=0";
 
 TEST(StringReader, AStructWithAllItsFieldsReadsBack) {
   const ModuleString s = parse_string("M({" + kAllMouseFields + "})", mouse_types(), "s");
   const MouseStatus m = param_at<MouseStatus>(s, sizeof(ModuleId));
   EXPECT_EQ(m.viewY, 3);
+  EXPECT_EQ(m.selectPoint.y, 2);
   EXPECT_TRUE(m.lbPushed);
 }
 
@@ -114,7 +116,7 @@ TEST(StringReader, AStructFieldLeftOutIsAnErrorAtTheClosingBrace) {
             "'M'");
   // Fields in another order are still all there.
   EXPECT_EQ(mouse_error_of("M({lbReleased=0,viewNum=1,viewX=2,viewY=3,atFront=(0,0,0),atRear=(0,0,0),"
-                           "atMiddle=(0,0,0),lbDown=0,lbPushed=1})"),
+                           "atMiddle=(0,0,0),selectDepth=0,selectPoint=(0,0,0),keypressed=0,lbDown=0,lbPushed=1})"),
             "no error");
 }
 

@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 7;
+inline constexpr std::uint32_t kAbiVersion = 8;
 
 using ModuleId = std::uint16_t;
 
@@ -123,9 +123,9 @@ struct ControlState {
   int step = 0;
   int current_group = 0;
   int next_group = 0;
-  // lpfg seeds its ran() as srand48(0) leaves drand48: {0x330E, 0, 0} (low
-  // 16 bits first); a model that never calls sran() draws that sequence.
-  std::uint64_t rand48 = 0x330EULL;
+  // ran()'s generator (erand48's 48-bit state): drand48's state before any
+  // srand48 call; an lpfg model starts from kLpfgRandomState instead.
+  std::uint64_t rand48 = 0x1234ABCD330EULL;
   // Messages (Printf, warnings) go through the engine.
   void* host = nullptr;
   void (*message)(void* host, const char* text) = nullptr;
@@ -139,8 +139,9 @@ struct ControlState {
   void* requests = nullptr;
   void (*request)(void* requests, int request, int value, const char* file) = nullptr;
   // Added in ABI version 5: Gillespie groups. The state of their own random
-  // generator (SplitMix64; SeedGillespie sets it, ran() does not touch it)
-  // and the time τ to the reaction of the last Gillespie step (GillespieTime).
+  // generator (erand48's, as rand48; SeedGillespie sets it, ran() does not
+  // touch it) and, from ABI version 8, the time of the Gillespie steps so far
+  // (GillespieTime: the sum of the times to each reaction, as lpfg keeps it).
   std::uint64_t gillespie_random = 0;
   double gillespie_time = 0;
   // Added in ABI version 6: Environment() / NoEnvironment() (LPFG manual
@@ -151,6 +152,10 @@ struct ControlState {
   const char* group_call_file = nullptr;
   int group_call_line = 0;
 };
+
+// The state lpfg gives both of its generators when it loads a model (erand48
+// words {0x330E, 0, 0}); ran() and Gillespie steps draw from it until seeded.
+inline constexpr std::uint64_t kLpfgRandomState = 0x330E;
 
 // What ControlState::request is asked (LPFG manual 6.1, 6.4, 6.6).
 enum ModelRequest : int {
@@ -163,7 +168,9 @@ enum ModelRequest : int {
 
 // What ControlState::input_query is asked.
 enum InputQuery : int {
-  kQueryFunction = 0,       // in: x, min, max        out: y
+  // lpfg's functions (func; tfunc and funcTangent through the function's
+  // limits, which pfunc sets), all in float as lpfg computes them.
+  kQueryFunction = 0,       // in: x                  out: y
   kQueryFunctionTangent,    // in: x                  out: dx, dy
   kQueryCurvePoint,         // in: s                  out: x, y, z
   kQueryCurveNormal,        // in: s                  out: x, y, z
@@ -175,6 +182,11 @@ enum InputQuery : int {
   kQueryCurveRecalculate,   // in: -                  out: -
   kQueryCurveReset,         // in: -                  out: -
   kQueryParameter,          // in: -                  out: value (val, LPFG manual 6.2.1)
+  // Added in ABI version 8.
+  kQueryTimelineFunction,   // in: x                  out: y (tfunc: x mapped from the limits to [0,1])
+  kQueryFunctionLimits,     // in: min, max           out: - (pfunc sets them, for good)
+  kQueryCpfgFunction,       // in: x                  out: y (cpfg's func, in double)
+  kQuerySurfacePoint,       // in: point              out: x, y, z (point 16p + k: patch p's k-th)
 };
 
 struct ModelDescriptor {

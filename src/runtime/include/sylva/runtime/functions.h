@@ -33,8 +33,9 @@ inline void request(int what, int value, const char* file) {
 
 // ---- Controlling the simulation (6.1) --------------------------------------
 
-// The number of derivation steps completed so far: 0 in Start and during the
-// first step's StartEach and productions, 1 from the first EndEach on.
+// The number of the derivation step under way, from 1, in its StartEach,
+// productions, decompositions and EndEach (lpfg counts the step before
+// StartEach); 0 in Start, and after the last step in End.
 inline int StepNo() { return sylva::rt::control.step; }
 inline void Stop() { sylva::rt::control.stop_requested = true; }
 inline void RunSimulation() {}
@@ -65,125 +66,44 @@ inline bool IsForward() { return sylva::rt::control.forward; }
 inline void Environment() { sylva::rt::control.environment = true; }
 inline void NoEnvironment() { sylva::rt::control.environment = false; }
 
-// ---- Functions, curves and surfaces from input files (6.2) -----------------
+// The model's settings and the number of its groups and vgroups, as lpfg
+// gives them to models (defined with the model: the derivation length, the
+// decomposition and interpretation depths, whether it is a ring L-system).
+int DerivationLength();
+int DecompositionMaxDepth();
+int InterpretationMaxDepth();
+int RingLsystem();
+int NumOfTables();
+int NumOfViews();
+
+// The environment pass can be switched off for the steps to come: lpfg's
+// name for asking whether it is.
+inline bool IgnoreEnvironment() { return !sylva::rt::control.environment; }
+
+// ---- Random numbers (6.3.2): erand48's generator, as lpfg draws them ------
 
 namespace sylva::rt {
-inline void ask_inputs(int query, int id, const double* in, double* out, const char* what) {
-  if (!control.input_query || !control.input_query(control.inputs, query, id, in, out)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s: there is no %d among the model's input files\n", what, id);
-    message(text);
-  }
+// One step of the 48-bit generator of erand48 (and drand48) on `state`.
+inline double next_rand48(std::uint64_t& state) {
+  state = (0x5DEECE66DULL * state + 0xB) & ((1ULL << 48) - 1);
+  return std::ldexp(static_cast<double>(state), -48);
 }
+inline double next_rand48() { return next_rand48(control.rand48); }
+// lpfg seeds its generators with the seed's low 32 bits as the state's
+// low 32 bits (the state's words {seed, seed >> 16, 0}), not as srand48 does.
+inline std::uint64_t lpfg_random_state(long seed) { return static_cast<std::uint64_t>(seed) & 0xFFFFFFFFULL; }
 }  // namespace sylva::rt
 
-// Function `id` (a .func or .fset file, named by its #define) at x in [0,1].
-inline float func(int id, float x) {
-  double in[3] = {x, 0, 1}, out[1] = {0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryFunction, id, in, out, "func");
-  return static_cast<float>(out[0]);
-}
-// The same function stretched over [min,max].
-inline float pfunc(int id, float x, float min, float max) {
-  double in[3] = {x, min, max}, out[1] = {0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryFunction, id, in, out, "pfunc");
-  return static_cast<float>(out[0]);
-}
-inline V2f funcTangent(int id, float x) {
-  double in[1] = {x}, out[2] = {0, 0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryFunctionTangent, id, in, out, "funcTangent");
-  return V2f(static_cast<float>(out[0]), static_cast<float>(out[1]));
-}
-
-namespace sylva::rt {
-inline V3d curve_point(int id, float s, int query, const char* what) {
-  double in[1] = {s}, out[3] = {0, 0, 0};
-  ask_inputs(query, id, in, out, what);
-  return V3d(out[0], out[1], out[2]);
-}
-}  // namespace sylva::rt
-
-// Curve `id` (contour files in command-line order, from 1) at normalized arc length s.
-inline float curveX(int id, float s) { return static_cast<float>(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveX").x); }
-inline float curveY(int id, float s) { return static_cast<float>(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveY").y); }
-inline float curveZ(int id, float s) { return static_cast<float>(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveZ").z); }
-inline V2f curveXYf(int id, float s) {
-  V3d p = sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXY");
-  return V2f(static_cast<float>(p.x), static_cast<float>(p.y));
-}
-inline V2d curveXYd(int id, float s) {
-  V3d p = sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXY");
-  return V2d(p.x, p.y);
-}
-inline V2d curveXY(int id, float s) { return curveXYd(id, s); }
-inline V3f curveXYZf(int id, float s) { return V3f(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXYZ")); }
-inline V3d curveXYZd(int id, float s) { return sylva::rt::curve_point(id, s, sylva::abi::kQueryCurvePoint, "curveXYZ"); }
-inline V3d curveXYZ(int id, float s) { return curveXYZd(id, s); }
-inline float curveLength(int id) {
-  double out[1] = {0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveLength, id, nullptr, out, "curveLength");
-  return static_cast<float>(out[0]);
-}
-inline V3f curveNormal(int id, float s) {
-  return V3f(sylva::rt::curve_point(id, s, sylva::abi::kQueryCurveNormal, "curveNormal"));
-}
-// Changing curve `id` for the rest of the run: the curve functions and the
-// generalized cylinders drawn with it see the change. A point set with
-// curveSetPoint (control points counted from 0 as listed in the file) reaches
-// the curve functions after curveRecalculate, as in lpfg.
-inline void curveScale(int id, float x, float y, float z) {
-  double in[3] = {x, y, z};
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveScale, id, in, nullptr, "curveScale");
-}
-inline void curveSetPoint(int id, int p, float x, float y, float z) {
-  double in[4] = {static_cast<double>(p), x, y, z};
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveSetPoint, id, in, nullptr, "curveSetPoint");
-}
-inline void curveRecalculate(int id) {
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveRecalculate, id, nullptr, nullptr, "curveRecalculate");
-}
-inline void curveReset(int id) {
-  sylva::rt::ask_inputs(sylva::abi::kQueryCurveReset, id, nullptr, nullptr, "curveReset");
-}
-
-// Parameter `id` of the .vset file (6.2.1): its name is #defined to its id.
-inline float val(int id) {
-  double out[1] = {0};
-  sylva::rt::ask_inputs(sylva::abi::kQueryParameter, id, nullptr, out, "val");
-  return static_cast<float>(out[0]);
-}
-
-// ---- Random numbers (6.3.2): drand48's generator, so seeded runs match lpfg.
-
-namespace sylva::rt {
-inline double next_rand48() {
-  std::uint64_t& x = control.rand48;
-  x = (0x5DEECE66DULL * x + 0xB) & ((1ULL << 48) - 1);
-  return std::ldexp(static_cast<double>(x), -48);
-}
-}  // namespace sylva::rt
-
-inline float ran(float range) { return static_cast<float>(sylva::rt::next_rand48() * range); }
-inline void sran(long seed) {
-  sylva::rt::control.rand48 = ((static_cast<std::uint64_t>(seed) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
-}
+// A number in [0, range): lpfg computes it in double, whatever it is stored in.
+inline double ran(double range) { return sylva::rt::next_rand48() * range; }
+inline void sran(long seed) { sylva::rt::control.rand48 = sylva::rt::lpfg_random_state(seed); }
 
 // ---- Gillespie groups (6.1.2, 7.2): their own generator, apart from ran().
-// The engine draws from it (SplitMix64); a seed gives the same run each time.
-inline void SeedGillespie(long seed) { sylva::rt::control.gillespie_random = static_cast<std::uint64_t>(seed); }
-// τ, the time to the reaction fired by the last Gillespie step (infinite when
-// no reaction could fire); 0 before the first.
-inline float GillespieTime() { return static_cast<float>(sylva::rt::control.gillespie_time); }
-
-// The first patch of surface `id` of the view file (6.2.4), to reshape (7.1).
-inline SurfaceObj GetSurface(int id) {
-  double out[48] = {};
-  sylva::rt::ask_inputs(sylva::abi::kQuerySurfacePatch, id, nullptr, out, "GetSurface");
-  SurfaceObj s;
-  for (int k = 0; k < 16; ++k)
-    s.points[k] = V3f(static_cast<float>(out[3 * k]), static_cast<float>(out[3 * k + 1]), static_cast<float>(out[3 * k + 2]));
-  return s;
-}
+inline void SeedGillespie(long seed) { sylva::rt::control.gillespie_random = sylva::rt::lpfg_random_state(seed); }
+// The time of the Gillespie steps so far: the sum of the times to each
+// reaction fired (lpfg's clock), 0 at Start and after ResetGillespie().
+inline double GillespieTime() { return sylva::rt::control.gillespie_time; }
+inline void ResetGillespie() { sylva::rt::control.gillespie_time = 0; }
 
 // ---- Views (6.4) --------------------------------------------------------------
 

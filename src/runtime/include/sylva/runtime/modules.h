@@ -103,10 +103,8 @@ void format_value(const T& v, abi::TextSink* out) {
                 ? std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v))
                 : std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(v));
     out->write(buf, static_cast<std::size_t>(n));
-  } else if constexpr (std::is_same_v<T, Vec2<float>> || std::is_same_v<T, Vec2<double>>) {
-    format_vector(&v.x, 2, out);
-  } else if constexpr (std::is_same_v<T, Vec3<float>> || std::is_same_v<T, Vec3<double>>) {
-    format_vector(&v.x, 3, out);
+  } else if constexpr (vector_size<T> > 0) {
+    format_vector(&v.x, vector_size<T>, out);
   } else if constexpr (std::is_same_v<T, const char*> || std::is_same_v<T, char*>) {
     out->write("\"", 1);
     for (const char* c = v ? v : ""; *c; ++c) {
@@ -177,21 +175,34 @@ constexpr abi::ModuleType predefined_module_type(const char* name) {
 }  // namespace sylva::rt
 
 inline void sylva_format_value(const EA20Array& a, sylva::abi::TextSink* out) {
-  sylva::rt::format_value(a.v, out);
+  sylva::rt::format_value(a.data, out);
 }
 inline void sylva_format_value(const SurfaceObj& s, sylva::abi::TextSink* out) {
   sylva::rt::format_value(s.points, out);
 }
 inline void sylva_format_value(const MouseStatus& m, sylva::abi::TextSink* out) {
   using sylva::rt::format_value;
-  out->write("{viewNum=");   format_value(m.viewNum, out);
-  out->write(",viewX=");     format_value(m.viewX, out);
-  out->write(",viewY=");     format_value(m.viewY, out);
-  out->write(",atFront=");   format_value(m.atFront, out);
-  out->write(",atRear=");    format_value(m.atRear, out);
-  out->write(",atMiddle=");  format_value(m.atMiddle, out);
-  out->write(",lbDown=");    format_value(m.lbDown, out);
-  out->write(",lbPushed=");  format_value(m.lbPushed, out);
-  out->write(",lbReleased="); format_value(m.lbReleased, out);
+  out->write("{viewNum=");     format_value(m.viewNum, out);
+  out->write(",viewX=");       format_value(m.viewX, out);
+  out->write(",viewY=");       format_value(m.viewY, out);
+  out->write(",atFront=");     format_value(m.atFront, out);
+  out->write(",atRear=");      format_value(m.atRear, out);
+  out->write(",atMiddle=");    format_value(m.atMiddle, out);
+  out->write(",selectDepth="); format_value(m.selectDepth, out);
+  out->write(",selectPoint="); format_value(m.selectPoint, out);
+  out->write(",keypressed=");  format_value(m.keypressed, out);
+  out->write(",lbPushed=");    format_value(m.lbPushed, out);
+  out->write(",lbDown=");      format_value(m.lbDown, out);
+  out->write(",lbReleased=");  format_value(m.lbReleased, out);
+  out->write("}");
+}
+inline void sylva_format_value(const CameraPosition& c, sylva::abi::TextSink* out) {
+  using sylva::rt::format_value;
+  out->write("{position="); format_value(c.position, out);
+  out->write(",lookat=");   format_value(c.lookat, out);
+  out->write(",head=");     format_value(c.head, out);
+  out->write(",left=");     format_value(c.left, out);
+  out->write(",up=");       format_value(c.up, out);
+  out->write(",scale=");    format_value(c.scale, out);
   out->write("}");
 }

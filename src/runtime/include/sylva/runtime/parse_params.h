@@ -120,10 +120,8 @@ bool parse_value(T& v, abi::TextSource* in) {
     return true;
   } else if constexpr (std::is_integral_v<T>) {
     return parse_integer(in, v);
-  } else if constexpr (std::is_same_v<T, Vec2<float>> || std::is_same_v<T, Vec2<double>>) {
-    return parse_sequence(&v.x, 2, '(', ')', in, "'(' to begin a vector");
-  } else if constexpr (std::is_same_v<T, Vec3<float>> || std::is_same_v<T, Vec3<double>>) {
-    return parse_sequence(&v.x, 3, '(', ')', in, "'(' to begin a vector");
+  } else if constexpr (vector_size<T> > 0) {
+    return parse_sequence(&v.x, vector_size<T>, '(', ')', in, "'(' to begin a vector");
   } else if constexpr (std::is_pointer_v<T>) {
     return parse_fail(in, "a value that can be read back (a pointer cannot)");
   } else if constexpr (std::is_array_v<T>) {
@@ -289,29 +287,55 @@ bool parse_params(abi::TextSource* in, unsigned char* params) {
 
 }  // namespace sylva::rt
 
-inline bool sylva_parse_value(EA20Array& a, sylva::abi::TextSource* in) { return sylva::rt::parse_value(a.v, in); }
+inline bool sylva_parse_value(EA20Array& a, sylva::abi::TextSource* in) { return sylva::rt::parse_value(a.data, in); }
 inline bool sylva_parse_value(SurfaceObj& s, sylva::abi::TextSource* in) {
   return sylva::rt::parse_value(s.points, in);
 }
-inline bool sylva_parse_value(MouseStatus& m, sylva::abi::TextSource* in) {
-  using namespace sylva::rt;
+
+namespace sylva::rt {
+// Reads "{name=value,...}": `field` reads the value of the field named
+// [name, name + n) and returns false (with in->expected set) if there is none.
+template <class ReadField>
+bool parse_named_fields(abi::TextSource* in, ReadField field) {
   if (!parse_char(in, '{', "'{' to begin a struct")) return false;
   if (parse_char_if(in, '}')) return true;
   do {
     const char* name = nullptr;
     std::size_t n = 0;
     if (!parse_field_name(in, name, n)) return false;
-    bool ok = same_name(name, n, "viewNum")    ? parse_value(m.viewNum, in)
-              : same_name(name, n, "viewX")    ? parse_value(m.viewX, in)
-              : same_name(name, n, "viewY")    ? parse_value(m.viewY, in)
-              : same_name(name, n, "atFront")  ? parse_value(m.atFront, in)
-              : same_name(name, n, "atRear")   ? parse_value(m.atRear, in)
-              : same_name(name, n, "atMiddle") ? parse_value(m.atMiddle, in)
-              : same_name(name, n, "lbDown")   ? parse_value(m.lbDown, in)
-              : same_name(name, n, "lbPushed") ? parse_value(m.lbPushed, in)
-              : same_name(name, n, "lbReleased") ? parse_value(m.lbReleased, in)
-                                                 : unknown_field(in, name, "a field of MouseStatus");
-    if (!ok) return false;
+    if (!field(name, n)) return false;
   } while (parse_char_if(in, ','));
   return parse_char(in, '}', "'}' to end the struct");
+}
+}  // namespace sylva::rt
+
+inline bool sylva_parse_value(MouseStatus& m, sylva::abi::TextSource* in) {
+  using namespace sylva::rt;
+  return parse_named_fields(in, [&](const char* name, std::size_t n) {
+    return same_name(name, n, "viewNum")       ? parse_value(m.viewNum, in)
+           : same_name(name, n, "viewX")       ? parse_value(m.viewX, in)
+           : same_name(name, n, "viewY")       ? parse_value(m.viewY, in)
+           : same_name(name, n, "atFront")     ? parse_value(m.atFront, in)
+           : same_name(name, n, "atRear")      ? parse_value(m.atRear, in)
+           : same_name(name, n, "atMiddle")    ? parse_value(m.atMiddle, in)
+           : same_name(name, n, "selectDepth") ? parse_value(m.selectDepth, in)
+           : same_name(name, n, "selectPoint") ? parse_value(m.selectPoint, in)
+           : same_name(name, n, "keypressed")  ? parse_value(m.keypressed, in)
+           : same_name(name, n, "lbPushed")    ? parse_value(m.lbPushed, in)
+           : same_name(name, n, "lbDown")      ? parse_value(m.lbDown, in)
+           : same_name(name, n, "lbReleased")  ? parse_value(m.lbReleased, in)
+                                               : unknown_field(in, name, "a field of MouseStatus");
+  });
+}
+inline bool sylva_parse_value(CameraPosition& c, sylva::abi::TextSource* in) {
+  using namespace sylva::rt;
+  return parse_named_fields(in, [&](const char* name, std::size_t n) {
+    return same_name(name, n, "position") ? parse_value(c.position, in)
+           : same_name(name, n, "lookat") ? parse_value(c.lookat, in)
+           : same_name(name, n, "head")   ? parse_value(c.head, in)
+           : same_name(name, n, "left")   ? parse_value(c.left, in)
+           : same_name(name, n, "up")     ? parse_value(c.up, in)
+           : same_name(name, n, "scale")  ? parse_value(c.scale, in)
+                                          : unknown_field(in, name, "a field of CameraPosition");
+  });
 }
