@@ -58,6 +58,7 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
   for (const std::string& define : parameter_name_defines(*inputs_)) build.defines.push_back(define);
   build::BuiltModel built = build::build_model(model_path, build);
+  for (const std::string& warning : built.warnings) tell(messages, warning + "\n");
   compiled_now_ = built.compiled_now;
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);
 

@@ -396,11 +396,16 @@ void Derivation::derive_forward() {
     if (pos > run) next_.append(src.data + run, pos - run);
   };
   const auto before_module = model_.before_module;
+  const bool probe = before_module && (model_.flags & abi::kModelProbeProductions) != 0;
   reset_lsystems();
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     const bool cut = id == rt::mid::Cut;
-    if (before_module && !cut) before_module(id);
+    // cpfg draws for every module of a stochastic L-system, a cut included.
+    if (before_module && (probe || !cut)) {
+      if (sub_lsystems_) control().current_group = current_group();
+      before_module(id);
+    }
     if (!cut && rules_.forward(RuleKind::Production, id).empty()) {
       if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
       pos = src.next(pos);
@@ -413,6 +418,12 @@ void Derivation::derive_forward() {
       pos = find_unmatched_end(src, pos);
     } else {
       std::size_t consumed = 0;
+      if (probe) {
+        // The rules that apply tell the model their probabilities; nothing is produced.
+        apply_forward(RuleKind::Production, src, pos, probe_out_, next_, true, &consumed);
+        probe_out_.clear();
+        before_module(abi::kNoModule);
+      }
       if (apply_forward(RuleKind::Production, src, pos, next_, next_, true, &consumed)) {
         pos = consumed;
       } else {

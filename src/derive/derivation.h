@@ -152,6 +152,7 @@ class Derivation {
   ModuleString string_;
   ModuleString next_;
   ModuleString successor_;  // backward derivation builds each successor here
+  ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;
   std::deque<ModuleString> expansion_scratch_;  // one per decomposition depth
   std::set<std::pair<int, ModuleId>> depth_warnings_;

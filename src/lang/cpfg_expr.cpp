@@ -10,6 +10,7 @@ struct Tok {
   enum Kind { kNumber, kIdent, kString, kOp, kEnd } kind = kEnd;
   std::string text;
   Pos pos;
+  std::size_t pos_index = 0;  // where it starts in the line
   std::size_t end = 0;
 };
 
@@ -21,6 +22,7 @@ Tok read_token(Cursor& c) {
   Tok t;
   t.pos = c.pos();
   const std::size_t start = c.at();
+  t.pos_index = start;
   const std::string& s = c.text();
   std::size_t i = start;
   if (i >= s.size()) {
@@ -253,7 +255,15 @@ std::string primary(Cursor& c, Scope& scope) {
     }
     if (scope.formals.count(t.text) || scope.locals.count(t.text) || scope.globals.count(t.text))
       return variable(t.text);
-    c.fail_at(t.pos, "unknown variable '" + t.text + "'");
+    // cpfg warns ("Identifier ... not previously defined") and reads a new
+    // variable of value 0.
+    if (scope.warnings) {
+      const SourceLocation at = c.location(t.pos);
+      scope.warnings->push_back(at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                                ": warning: unknown variable '" + t.text + "' read as 0 (as cpfg does)");
+    }
+    scope.locals.insert(t.text);
+    return variable(t.text);
   }
   expected(c, t, "an expression");
 }
@@ -349,16 +359,27 @@ std::string statement(Cursor& c, Scope& scope) {
     if (peek_token(c).text == ";") next_token(c);
     return "do " + body + " while (" + cond + ");";
   }
-  if (t.kind != Tok::kIdent) expected(c, t, "a statement (an assignment, if, while or do)");
+  // An assignment (name = e; or name[i] = e;), or else an expression whose
+  // value is dropped (cpfg's "procedure": f(x); and also x - y;).
   Tok after = peek_token(c);
-  if (after.text == "(") {
-    std::string text = call(c, scope, t);
-    expect_op(c, ";");
-    return text + ";";
+  bool assignment = t.kind == Tok::kIdent && after.kind == Tok::kOp && after.text == "=";
+  if (t.kind == Tok::kIdent && after.text == "[" && scope.arrays.count(t.text)) {
+    const std::size_t index_at = c.at();
+    Scope probe = scope;
+    probe.warnings = nullptr;
+    array_index(c, probe);
+    assignment = peek_token(c).text == "=";
+    c.set(index_at);
+  }
+  if (!assignment) {
+    c.set(t.pos_index);
+    std::string value = ternary(c, scope);
+    Tok semi = next_token(c);
+    if (semi.kind != Tok::kOp || semi.text != ";") expected(c, semi, "';' after the statement");
+    return "(void)(" + value + ");";
   }
   std::string target;
   if (after.text == "[") {
-    if (!scope.arrays.count(t.text)) c.fail_at(t.pos, "'" + t.text + "' is not an array");
     target = variable(t.text) + array_index(c, scope);
   } else {
     if (scope.arrays.count(t.text)) c.fail_at(t.pos, "array " + t.text + " needs an index");
@@ -413,48 +434,16 @@ inline double sylva_cpfg_atan(double x, double y) { return ::std::atan2(y, x) / 
 inline double sylva_cpfg_atan2(double y, double x) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
 inline double sylva_cpfg_pow(double x, double y) { return ::std::pow(x, y); }
 inline double sylva_cpfg_sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
-inline double sylva_cpfg_ran(double x) { return x * ::sylva::rt::next_rand48(); }
+// ran, nran, bran, biran and srand: cpfg's own stream and methods (cpfg_random.h).
+::sylva::rt::cpfg::Random sylva_cpfg_random;
+inline double sylva_cpfg_ran(double x) { return sylva_cpfg_random.ran(x); }
 inline double sylva_cpfg_srand(double seed) {
-  ::sylva::rt::control.rand48 = ((static_cast<::std::uint64_t>(static_cast<long>(seed)) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
+  sylva_cpfg_random.srand(seed);
   return 0.0;
 }
-inline double sylva_cpfg_nran(double mean, double sd) {
-  double u1 = ::sylva::rt::next_rand48(), u2 = ::sylva::rt::next_rand48();
-  if (u1 <= 0) u1 = 1e-300;
-  return mean + sd * ::std::sqrt(-2.0 * ::std::log(u1)) * ::std::cos(2.0 * 3.14159265358979323846 * u2);
-}
-// bran(a,b): a beta variate, X/(X+Y) of gamma variates X ~ G(a), Y ~ G(b)
-// (Marsaglia and Tsang's method); NaN unless a > 0 and b > 0.
-inline double sylva_cpfg_uniform_open() {
-  double u;
-  do u = ::sylva::rt::next_rand48();
-  while (u <= 0);
-  return u;
-}
-inline double sylva_cpfg_gamma(double a) {
-  if (a < 1) return sylva_cpfg_gamma(a + 1) * ::std::pow(sylva_cpfg_uniform_open(), 1 / a);
-  const double d = a - 1.0 / 3.0, c = 1 / ::std::sqrt(9 * d);
-  while (true) {
-    const double x = sylva_cpfg_nran(0, 1), v0 = 1 + c * x;
-    if (v0 <= 0) continue;
-    const double v = v0 * v0 * v0, u = sylva_cpfg_uniform_open();
-    if (u < 1 - 0.0331 * x * x * x * x || ::std::log(u) < 0.5 * x * x + d * (1 - v + ::std::log(v))) return d * v;
-  }
-}
-inline double sylva_cpfg_bran(double a, double b) {
-  if (!(a > 0) || !(b > 0)) return ::std::nan("");
-  const double x = sylva_cpfg_gamma(a), y = sylva_cpfg_gamma(b);
-  // Both too small to tell apart (a and b near 0): the limit, 0 or 1.
-  if (!(x + y > 0)) return ::sylva::rt::next_rand48() < a / (a + b) ? 1.0 : 0.0;
-  return x / (x + y);
-}
-// biran(n,p): how many of n uniform numbers fall below p.
-inline double sylva_cpfg_biran(double n, double p) {
-  const long trials = ::std::lround(n);
-  long hits = 0;
-  for (long k = 0; k < trials; ++k) hits += ::sylva::rt::next_rand48() < p;
-  return static_cast<double>(hits);
-}
+inline double sylva_cpfg_nran(double mean, double sd) { return sylva_cpfg_random.nran(mean, sd); }
+inline double sylva_cpfg_bran(double a, double b) { return sylva_cpfg_random.bran(a, b); }
+inline double sylva_cpfg_biran(double n, double p) { return sylva_cpfg_random.biran(n, p); }
 inline double sylva_cpfg_func(double id, double x) { return func(static_cast<int>(id), static_cast<float>(x)); }
 inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
@@ -546,7 +535,8 @@ void sylva_cpfg_format_label(const unsigned char* params, ::sylva::abi::TextSink
     out->write(text, static_cast<::std::size_t>(n));
   }
 }
-[[maybe_unused]] double sylva_cpfg_r = 0;  // the stochastic draw for the module being rewritten
+// True while the derivation probes which productions apply (kModelProbeProductions).
+[[maybe_unused]] bool sylva_cpfg_probing = false;
 }  // namespace
 )";
 }

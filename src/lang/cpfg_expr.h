@@ -17,9 +17,8 @@ struct Pos {
   int column = 0;
 };
 
-// One logical line of the L-system file: physical lines joined (a line that
-// starts with white space continues the previous one), with each character's
-// position.
+// One logical line of the L-system file: physical lines joined as cpfg joins
+// them (cpfg_lines.h), with each character's position.
 struct Line {
   std::string text;
   std::vector<Pos> pos;  // one per character, plus one for the end
@@ -70,6 +69,8 @@ struct Scope {
   std::set<std::string> globals;  // assigned in Start/End blocks
   std::set<std::string> arrays;   // define: { array ... }
   bool control_block = false;     // assignments to new names make globals
+  // Where warnings go ("file:line:column: warning: ..."); none: dropped.
+  std::vector<std::string>* warnings = nullptr;
 };
 
 // The C++ name of a cpfg variable (kept apart from C++ keywords and helpers).

@@ -411,6 +411,7 @@ class CppGenerator {
     t += "    " + fn(control_[0]) + ", " + fn(control_[1]) + ", " + fn(control_[2]) + ", " + fn(control_[3]) + ",\n";
     std::string flags = model_.cpfg ? "::sylva::abi::kModelCpfg" : "0";
     if (model_.cpfg_sub_lsystems) flags += " | ::sylva::abi::kModelSubLsystems";
+    if (model_.cpfg_stochastic) flags += " | ::sylva::abi::kModelProbeProductions";
     t += "    " + flags + ", " + (model_.cpfg_stochastic ? "&sylva_cpfg_before_module" : "nullptr") + ",\n";
     auto id_or_none = [&](const std::string& name) {
       return name.empty() ? std::string("::sylva::abi::kNoModule") : std::to_string(module_id_.at(name));

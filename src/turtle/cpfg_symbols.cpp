@@ -21,7 +21,7 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"+", O::Left}, {"-", O::Right}, {"&", O::Down}, {"^", O::Up}, {"\\", O::RollLeft}, {"/", O::RollRight},
       {"|", O::TurnAround},
       // $ ends a sub-L-system's ?(label,s); elsewhere it is ABOP's roll to vertical.
-      {"@v", O::RollToVertical}, {"$", O::ReturnOrRollToVertical}, {"?", O::SubLsystemCall},
+      {"@v", O::RollToVertical}, {"$", O::SubLsystemReturn}, {"?", O::SubLsystemCall},
       {"@R", O::SetHeading},
       {"#", O::WidthUp}, {"!", O::WidthDown},
       {";", O::ColorUp}, {",", O::ColorDown},
@@ -219,7 +219,6 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     }
   }
   Frame& frame = state_.frame;
-  const bool corrected = settings_.corrected_rotation;
   // Computed only by the symbols that use them (this runs for every module).
   // A rotation symbol's angle: its parameter, or the view file's increment.
   auto angle = [&] { return n > 0 ? param(p, 0) : settings_.angle_increment; };
@@ -248,29 +247,34 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       break;
     }
 
-    // The lpfg modules these are the cpfg equivalents of (LPFG manual 5.2):
-    // + Left, - Right, & Down, ^ Up, \ RollL, / RollR.
+    // cpfg's turtle (interpret.c) starts with H = +y, L = -x and U = -z: its
+    // frame is left-handed (U = L x H). The frame here is lpfg's, with U =
+    // H x L, so cpfg's U is -frame.up throughout. Turns and pitches come out
+    // as lpfg's corrected + - & ^ do; cpfg's / rolls L towards its U, the
+    // other way from lpfg's corrected /. lpfg's "corrected rotation" does
+    // not apply: cpfg has no such setting.
     case O::Left: turn(angle(), 0); break;
     case O::Right: turn(-angle(), 0); break;
-    case O::Down: turn(corrected ? angle() : -angle(), 1); break;
-    case O::Up: turn(corrected ? -angle() : angle(), 1); break;
-    case O::RollLeft: turn(corrected ? -angle() : angle(), 2); break;
-    case O::RollRight: turn(corrected ? angle() : -angle(), 2); break;
+    case O::Down: turn(angle(), 1); break;
+    case O::Up: turn(-angle(), 1); break;
+    case O::RollLeft: turn(angle(), 2); break;
+    case O::RollRight: turn(-angle(), 2); break;
     case O::TurnAround: frame.rotate_up(-1, 0); break;
-    case O::ReturnOrRollToVertical:
+    case O::SubLsystemReturn:
+      // The end of a sub-L-system: the caller's scale again. cpfg's $ does
+      // nothing else (interpret.c): it never rolls the turtle.
       if (n == 0 && !sub_lsystem_scales_.empty()) {
-        // The end of a sub-L-system: the caller's scale again.
         state_.scale = sub_lsystem_scales_.back();
         sub_lsystem_scales_.pop_back();
-        break;
       }
-      [[fallthrough]];
+      break;
     case O::RollToVertical:
       if (!frame.roll_to_vertical(kVertical, kEpsilon)) note(" ignored: heading vertical");
       break;
     case O::SetHeading:
       if (n >= 6) {
-        if (!frame.set_head_up(vec_param(p, 0), vec_param(p, 3), kEpsilon)) note(" ignored: degenerate vectors");
+        // The up vector given is cpfg's U, -frame.up.
+        if (!frame.set_head_up(vec_param(p, 0), -vec_param(p, 3), kEpsilon)) note(" ignored: degenerate vectors");
       } else if (n >= 3) {
         if (!frame.set_heading(vec_param(p, 0), kEpsilon)) note(" ignored: no heading");
       } else {
@@ -411,7 +415,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::QueryPosition: query_cpfg(p, n, state_.position, in_string); break;
     case O::QueryHeading: query_cpfg(p, n, frame.heading, in_string); break;
     case O::QueryLeft: query_cpfg(p, n, frame.left, in_string); break;
-    case O::QueryUp: query_cpfg(p, n, frame.up, in_string); break;
+    case O::QueryUp: query_cpfg(p, n, -frame.up, in_string); break;  // cpfg's U
 
     // ?(label,s): the sub-L-system's structure is scaled by s (CPFG manual
     // 7.2) until its $.

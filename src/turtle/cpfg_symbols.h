@@ -39,7 +39,7 @@ enum class CpfgOp : std::uint8_t {
   ElasticitySet, ElasticityUp, ElasticityDown,                          // @Ts @T @Td
   QueryPosition, QueryHeading, QueryLeft, QueryUp,                      // ?P ?H ?L ?U
   SubLsystemCall,                                                       // ?(label,s)
-  ReturnOrRollToVertical,                                               // $
+  SubLsystemReturn,                                               // $
   PredefinedSurface,                                                    // ~id
   Label,                                                                // @L("format",p1,...)
   MinimizeTwist, ForceTwist,                                            // @Tp @Tf

@@ -199,6 +199,11 @@ struct ModelDescriptor {
   std::uint32_t flags;  // kModelCpfg ...
   // Called by a forward derivation step for every module of the old string
   // before its productions are tried (cpfg's stochastic draw); may be null.
+  // With kModelProbeProductions, a module's productions are tried twice: a
+  // probing pass, in which the rules that apply say so to the model and
+  // produce nothing, then before_module(kNoModule) and the real pass.
+  // For sub-L-system models, ControlState::current_group holds the label of
+  // the module's L-system during the call.
   void (*before_module)(ModuleId id);
   // Added in ABI version 3: cpfg's sub-L-systems (CPFG manual 7.2), when
   // flags has kModelSubLsystems. Rule::group is then the label of the
@@ -229,6 +234,8 @@ inline constexpr ModuleId kNoModule = 0xFFFF;
 // ModelDescriptor::flags
 inline constexpr std::uint32_t kModelCpfg = 1;  // a cpfg model: cpfg's string format and derivation
 inline constexpr std::uint32_t kModelSubLsystems = 2;  // cpfg sub-L-systems: see main_lsystem
+// cpfg's stochastic choice among the productions that apply: see before_module.
+inline constexpr std::uint32_t kModelProbeProductions = 4;
 
 using ModelEntryPoint = const ModelDescriptor* (*)();
 inline constexpr const char* kEntryPointName = "sylva_model_v1";
