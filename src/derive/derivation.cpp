@@ -55,7 +55,11 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     const abi::ContextFilter& filter = model.filters[f];
     std::vector<std::uint8_t> skipped(model.module_count, filter.consider ? 1 : 0);
     for (std::uint32_t k = 0; k < filter.count; ++k) skipped[filter.ids[k]] = filter.consider ? 0 : 1;
-    skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
+    // Brackets keep the branching structure, except where cpfg reads a right
+    // context past an ignored [ or ] as past any ignored symbol (kFlatBracket).
+    const bool cpfg = (model.flags & abi::kModelCpfg) != 0;
+    for (ModuleId bracket : {rt::mid::SB, rt::mid::EB})
+      skipped[bracket] = cpfg && skipped[bracket] ? kFlatBracket : 0;
     skip_tables_.push_back(std::move(skipped));
   }
   sub_lsystems_ = (model.flags & abi::kModelSubLsystems) != 0;
@@ -78,7 +82,9 @@ bool Derivation::predecessor_holds(const std::vector<ModuleId>& ids) const {
 }
 
 void Derivation::add_query_modules(const std::vector<ModuleId>& ids) {
-  if (!ids.empty() && predecessor_holds(ids)) uses_query_modules_ = true;
+  // cpfg interprets the string after every step wherever a query module
+  // occurs in the L-system, read by a production or not (its checkEnvironment).
+  if (!ids.empty()) uses_query_modules_ = true;
 }
 
 Derivation::~Derivation() {

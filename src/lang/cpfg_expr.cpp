@@ -17,8 +17,21 @@ struct Tok {
 bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// A character no token of cpfg's expressions starts with: cpfg's lexer
+// passes it by (flex echoes it). A macro continued with "\\" leaves a "\".
+bool stray(const std::string& s, std::size_t i) {
+  const char ch = s[i];
+  if (ch == '|') return i + 1 >= s.size() || s[i + 1] != '|';
+  if (ch == '.') return i + 1 >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i + 1]));
+  return ch == '\\' || ch == '@' || ch == '#' || ch == '$' || ch == '\'' || ch == '~' || ch == '`';
+}
+
 Tok read_token(Cursor& c) {
   c.skip_space();
+  while (c.at() < c.text().size() && stray(c.text(), c.at())) {
+    c.set(c.at() + 1);
+    c.skip_space();
+  }
   Tok t;
   t.pos = c.pos();
   const std::size_t start = c.at();
@@ -76,6 +89,10 @@ Tok peek_token(Cursor& c) {
 }
 
 Tok next_token(Cursor& c) {
+  c.skip_space();
+  for (std::size_t i = c.at(); i < c.text().size() && (stray(c.text(), i) || c.text()[i] == ' ' || c.text()[i] == '\t'); ++i)
+    if (stray(c.text(), i))
+      c.warn_at(c.pos_at(i), std::string("'") + c.text()[i] + "' read past: it starts no part of an expression (as in cpfg)");
   Tok t = read_token(c);
   c.set(t.end);
   return t;

@@ -26,7 +26,9 @@ struct Line {
 
 class Cursor {
  public:
-  Cursor(const Line& line, const std::vector<std::string>& files) : line_(line), files_(files) {}
+  // `warnings` receives "file:line:column: warning: ..." for what is read past.
+  Cursor(const Line& line, const std::vector<std::string>& files, std::vector<std::string>* warnings = nullptr)
+      : line_(line), files_(files), warnings_(warnings) {}
 
   std::size_t at() const { return i_; }
   void set(std::size_t i) { i_ = i; }
@@ -55,10 +57,17 @@ class Cursor {
   [[noreturn]] void fail(const std::string& message) const;
   [[noreturn]] void fail_at(Pos p, const std::string& message) const { throw ModelError(location(p), message); }
   const std::string& text() const { return line_.text; }
+  void warn_at(Pos p, const std::string& message) const {
+    if (!warnings_) return;
+    const SourceLocation at = location(p);
+    warnings_->push_back(at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                         ": warning: " + message);
+  }
 
  private:
   const Line& line_;
   const std::vector<std::string>& files_;
+  std::vector<std::string>* warnings_;
   std::size_t i_ = 0;
 };
 

@@ -92,7 +92,7 @@ class CpfgParser {
   // Names assigned (or read by fscan) in Start/End blocks are global (CPFG manual 4.1).
   void collect_globals() {
     for (const Line& line : lines_) {
-      Cursor c(line, model_.files);
+      Cursor c(line, model_.files, &model_.warnings);
       std::string key;
       if (!keyword(c, &key) || (key != "start" && key != "starteach" && key != "endeach" && key != "end")) continue;
       const std::string& s = line.text;
@@ -158,7 +158,7 @@ class CpfgParser {
   }
 
   void statement(const Line& line) {
-    Cursor c(line, model_.files);
+    Cursor c(line, model_.files, &model_.warnings);
     const Pos at = c.pos();
     std::string key;
     const bool has_key = keyword(c, &key);
@@ -240,9 +240,8 @@ class CpfgParser {
         // The homomorphism's own stream for ran() and its kin.
         blocks_.back().homomorphism_seed = seed;
       } else {
-        // The L-system's productions are chosen at random; only the main
-        // L-system's seed seeds the one stream all L-systems draw from.
-        blocks_.back().seed = seed;
+        // The L-system's productions are chosen at random. The seed's value
+        // does not matter in batch runs (see random_streams).
         blocks_.back().stochastic = true;
       }
     } else if (key == "define") {
@@ -544,6 +543,7 @@ class CpfgParser {
     // The probability: an expression, evaluated once the predecessor matched.
     std::string probability = "1.0";
     if (c.accept(":")) {
+      c.skip_space();
       const Pos p = c.pos();
       probability = cpfg::expression(c, scope);
       if (!blocks_.back().stochastic)
@@ -642,22 +642,37 @@ class CpfgParser {
     const Pos first = lines_.front().pos.front();
     // The stream of ran() and its kin restarts with every run.
     std::string start = "sylva_cpfg_random = ::sylva::rt::cpfg::Random{}; ";
-    // cpfg seeds the stream that chooses productions with the main L-system's
-    // seed: when it is not 0 (seed48({seed, 0, 155})); otherwise drand48
-    // starts where the C library starts it.
-    if (!blocks_.front().seed.empty())
-      start += "{ const long s = " + blocks_.front().seed +
-               "; if (s != 0) ::sylva::rt::control.rand48 = (155ULL << 32) | (static_cast<::std::uint64_t>(s) & 0xFFFF); } ";
+    // The stream that chooses among stochastic productions is the C
+    // library's drand48. cpfg seeds it (seed48) only when its window opens;
+    // run in batch (-g), it never does, so drand48 starts from its zero state
+    // whatever seed: says. Sylva's strings are cpfg's batch strings.
+    if (std::any_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.stochastic; }))
+      start += "::sylva::rt::control.rand48 = 0; ";
     std::string code = "namespace {\n";
     bool own_streams = false;
     for (const Block& b : blocks_) own_streams = own_streams || !b.homomorphism_seed.empty();
     if (own_streams) {
-      code += "[[maybe_unused]] ::std::uint64_t sylva_cpfg_homomorphism_stream[" + std::to_string(blocks_.size()) + "];\n";
+      // cpfg restarts a homomorphism's own stream (a seed: of 0 or more) each
+      // time it interprets the string: the engine asks for the interpretation
+      // depth once at the start of every interpretation pass.
+      code += "[[maybe_unused]] ::std::uint64_t sylva_cpfg_homomorphism_stream[" + std::to_string(blocks_.size()) + "];\n"
+              "int sylva_cpfg_restart_streams() {\n";
       for (std::size_t k = 0; k < blocks_.size(); ++k) {
         if (blocks_[k].homomorphism_seed.empty()) continue;
-        start += "{ const long s = " + blocks_[k].homomorphism_seed + "; if (s >= 0) sylva_cpfg_homomorphism_stream[" +
-                 std::to_string(k) + "] = ::sylva::rt::cpfg::Stream::seeded(s); } ";
+        code += "  { const long s = " + blocks_[k].homomorphism_seed + "; if (s >= 0) sylva_cpfg_homomorphism_stream[" +
+                std::to_string(k) + "] = ::sylva::rt::cpfg::Stream::seeded(s); }\n";
       }
+      code += "  return 0;\n}\n";
+      bool has_depth = false;
+      for (Item& item : model_.items) {
+        Setting* setting = std::get_if<Setting>(&item);
+        if (!setting || setting->kind != Setting::kInterpretationDepth) continue;
+        setting->expression.front().text = "(sylva_cpfg_restart_streams(), " + setting->expression.front().text + ")";
+        has_depth = true;
+      }
+      if (!has_depth)
+        model_.items.push_back(Setting{Setting::kInterpretationDepth, code_at(first, "(sylva_cpfg_restart_streams(), 1)"),
+                                       token_at(first)});
     }
     const bool stochastic = std::any_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.stochastic; });
     if (stochastic) {
@@ -716,8 +731,7 @@ class CpfgParser {
     Token filter_at;
     // A seed: statement makes the L-system's productions stochastic.
     bool stochastic = false;
-    std::string seed;               // C++ of its value; empty without one
-    std::string homomorphism_seed;  // the homomorphism's seed:, likewise
+    std::string homomorphism_seed;  // C++ of the homomorphism's seed:; empty without one
     bool homomorphism_rules = false;
   };
   std::vector<Block> blocks_;

@@ -457,21 +457,28 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     // @Tp: up and left carried from the last step's to the current heading
     // by the smallest rotation between the two headings (parallel
     // transport), which undoes the twist (/ \) since that step.
+    // @Tp (cpfg's adjust_up_and_left): the up vector of the last F or G,
+    // carried by the rotation from that step's heading to this one. Where
+    // the heading has not turned (or turned right round), nothing changes.
     case O::MinimizeTwist: {
       const Vec3 from = state_.step_heading, to = frame.heading;
       const Vec3 axis = cross(from, to);
       const float s = length(axis), c = dot(from, to);
-      Vec3 up = state_.step_up;
-      if (s > 1e-6f) up = rotated(up, axis / s, c, s);
-      else if (c < 0) note(" (heading reversed: the last step's up kept)");
+      if (s <= 1e-6f) {
+        note(" (the heading has not turned since the last step)");
+        break;
+      }
+      Vec3 up = rotated(state_.step_up, axis / s, c, s);
       // Exactly across the heading (it may have drifted from it).
       up = up - to * dot(up, to);
       if (length(up) < kEpsilon || !frame.set_head_up(to, up, kEpsilon)) note(" ignored: up along the heading");
       break;
     }
-    // @Tf: this turtle's tropisms bend the heading by the smallest rotation,
-    // which keeps the twist of / and \ already; there is nothing to force.
-    case O::ForceTwist: note(" (twist is always kept)"); break;
+    // @Tf: the twist so far is wanted; @Tp starts from here.
+    case O::ForceTwist:
+      state_.step_heading = frame.heading;
+      state_.step_up = frame.up;
+      break;
 
     // @;(n) @,(n): the back side's colour index, stepped from the front's
     // until set. Outputs draw one side: the Scene keeps the front's colour.

@@ -189,7 +189,10 @@ struct ModelDescriptor {
   void (*axiom)(ModuleBuffer* out);
   int (*derivation_length)();
   int (*decomposition_depth)();   // null: the default depth, 1
-  int (*interpretation_depth)();  // null: the default depth, 1
+  // null: the default depth, 1. Called once at the start of every
+  // interpretation pass (cpfg models restart a homomorphism's own random
+  // stream there).
+  int (*interpretation_depth)();
   int (*ring)();                  // null: not a ring L-system
   void (*start)();
   void (*start_each)();
