@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "lang/cpfg_expr.h"
@@ -50,7 +51,10 @@ std::string mangle(const std::string& symbol, std::size_t params) {
 
 class CpfgParser {
  public:
-  CpfgParser(const std::string& text, const std::string& main_file) {
+  // `split`: the multi-character turtle symbols (@o, ?P ...) to read as one
+  // module a character, as cpfg's string holds them (see parse_cpfg).
+  CpfgParser(const std::string& text, const std::string& main_file, std::set<std::string> split = {})
+      : split_(std::move(split)) {
     model_.main_file = main_file;
     model_.cpfg = true;
     lines_ = cpfg::read_logical_lines(text, model_.files, main_file);
@@ -71,6 +75,19 @@ class CpfgParser {
     if (!seen_axiom_) throw ModelError(SourceLocation{model_.main_file, 1, 1}, "the L-system has no axiom");
     finish();
     return std::move(model_);
+  }
+
+  // The multi-character symbols of the model that hold a character some
+  // production names as a module of its own (o(r) beside @o(0.2)): in cpfg
+  // both are the same module o, so those symbols must be read split.
+  std::set<std::string> symbols_to_split() const {
+    std::set<std::string> split;
+    for (const auto& [sym, names] : by_symbol_) {
+      if (sym.size() < 2 || sym == "@L" || (sym[0] != '@' && sym[0] != '?' && sym[0] != '~')) continue;
+      for (char ch : sym)
+        if (lone_pattern_symbols_.count(ch)) split.insert(sym);
+    }
+    return split;
   }
 
  private:
@@ -223,10 +240,11 @@ class CpfgParser {
       model_.items.push_back(std::move(axiom));
     } else if (key == "ignore" || key == "consider") {
       Block& block = blocks_.back();
-      if (!block.filter_symbols.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
+      if (!block.filter_chars.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
       block.filter_consider = key == "consider";
       block.filter_at = token_at(at);
-      while (!c.done()) block.filter_symbols.push_back(symbol(c));
+      // Characters, as cpfg's ignore table has them.
+      while (!c.done()) block.filter_chars.insert(c.get());
     } else if (key == "seed") {
       if (section_ == kDecomposition) c.fail_at(at, "seed: cannot be used in a decomposition (CPFG manual 4.4)");
       if (section_ == kHomomorphism && blocks_.back().homomorphism_rules)
@@ -323,6 +341,16 @@ class CpfgParser {
 
   // One cpfg symbol: a character, or a multi-character turtle symbol.
   std::string symbol(Cursor& c) {
+    std::string s = joined_symbol(c);
+    // A symbol read split: its first character now, the rest as symbols of their own.
+    if (s.size() > 1 && split_.count(s)) {
+      c.set(c.at() - (s.size() - 1));
+      s.resize(1);
+    }
+    return s;
+  }
+
+  std::string joined_symbol(Cursor& c) {
     c.skip_space();
     const Pos p = c.pos();
     char ch = c.get();
@@ -472,6 +500,7 @@ class CpfgParser {
         continue;
       }
       std::string sym = symbol(c);
+      if (sym.size() == 1) lone_pattern_symbols_.insert(sym[0]);
       if (sym == "@L" && c.peek() == '(') c.fail_at(p, "@L(...) in a predecessor is not supported yet");
       std::vector<std::string> formals;
       if (c.peek() == '(') {
@@ -581,20 +610,20 @@ class CpfgParser {
   }
 
   void finish() {
-    // ignore: / consider: name symbols; each stands for all its module types.
-    // Each L-system has its own.
+    // ignore: / consider: name characters. A module type is named when
+    // every character of its symbol is (@o by @ and o). Each L-system has its own.
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
       const Block& block = blocks_[b];
-      if (block.filter_symbols.empty()) continue;
+      if (block.filter_chars.empty()) continue;
       ContextFilter filter;
       filter.consider = block.filter_consider;
       filter.at = block.filter_at;
-      for (const std::string& sym : block.filter_symbols) {
-        if (sym == "[" || sym == "]" || sym == "%") {
-          filter.names.push_back(sym == "[" ? "SB" : sym == "]" ? "EB" : "Cut");
-          continue;
-        }
-        for (const std::string& name : by_symbol_[sym]) filter.names.push_back(name);
+      if (block.filter_chars.count('[')) filter.names.push_back("SB");
+      if (block.filter_chars.count(']')) filter.names.push_back("EB");
+      if (block.filter_chars.count('%')) filter.names.push_back("Cut");
+      for (const auto& [sym, names] : by_symbol_) {
+        const bool named = std::all_of(sym.begin(), sym.end(), [&](char ch) { return block.filter_chars.count(ch) > 0; });
+        if (named) filter.names.insert(filter.names.end(), names.begin(), names.end());
       }
       const int index = static_cast<int>(model_.filters.size());
       model_.filters.push_back(filter);
@@ -720,13 +749,15 @@ class CpfgParser {
 
   Model model_;
   std::vector<Line> lines_;
+  std::set<std::string> split_;          // symbols read a character a module
+  std::set<char> lone_pattern_symbols_;  // one-character symbols in predecessors and contexts
   std::map<std::string, std::size_t> module_index_;
   std::map<std::string, std::vector<std::string>> by_symbol_;
   std::set<std::string> globals_, arrays_;
   // One per Lsystem: ... endlsystem; the first is the main L-system.
   struct Block {
     int label = 0;
-    std::vector<std::string> filter_symbols;
+    std::set<char> filter_chars;
     bool filter_consider = false;
     Token filter_at;
     // A seed: statement makes the L-system's productions stochastic.
@@ -747,7 +778,15 @@ class CpfgParser {
 }  // namespace
 
 Model parse_cpfg(const std::string& preprocessed, const std::string& main_file) {
-  return CpfgParser(preprocessed, main_file).parse();
+  // cpfg's string is one module a character; the turtle reads @o, ?P and
+  // their kin from the characters that follow @, ? or ~. Sylva keeps such a
+  // symbol as one module, unless a production names one of its characters on
+  // its own: then the model is read again with those symbols split.
+  CpfgParser joined(preprocessed, main_file);
+  Model model = joined.parse();
+  std::set<std::string> split = joined.symbols_to_split();
+  if (split.empty()) return model;
+  return CpfgParser(preprocessed, main_file, std::move(split)).parse();
 }
 
 }  // namespace sylva::lang

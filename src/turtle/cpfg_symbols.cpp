@@ -13,14 +13,16 @@
 
 namespace sylva::turtle {
 
-CpfgOp cpfg_op(const std::string& symbol) {
+namespace {
+
+const std::unordered_map<std::string_view, CpfgOp>& command_table() {
   using O = CpfgOp;
   static const std::unordered_map<std::string_view, CpfgOp> table = {
       {"F", O::Forward}, {"f", O::Move}, {"G", O::ForwardNoVertex}, {"g", O::MoveNoVertex},
       {"@M", O::MoveTo},
       {"+", O::Left}, {"-", O::Right}, {"&", O::Down}, {"^", O::Up}, {"\\", O::RollLeft}, {"/", O::RollRight},
       {"|", O::TurnAround},
-      // $ ends a sub-L-system's ?(label,s); elsewhere it is ABOP's roll to vertical.
+      // $ ends a sub-L-system's ?(label,s), and does nothing else.
       {"@v", O::RollToVertical}, {"$", O::SubLsystemReturn}, {"?", O::SubLsystemCall},
       {"@R", O::SetHeading},
       {"#", O::WidthUp}, {"!", O::WidthDown},
@@ -41,10 +43,23 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"@L", O::Label}, {"@Tp", O::MinimizeTwist}, {"@Tf", O::ForceTwist},
       {"@;", O::BackColorUp}, {"@,", O::BackColorDown},
   };
-  auto it = table.find(symbol);
-  if (it != table.end()) return it->second;
-  if (symbol.size() == 2 && symbol[0] == '~') return O::PredefinedSurface;  // ~id (CPFG manual 6.7.1)
-  return O::None;
+  return table;
+}
+
+}  // namespace
+
+CpfgOp cpfg_op(const std::string& symbol) {
+  auto it = command_table().find(symbol);
+  if (it != command_table().end()) return it->second;
+  if (symbol.size() == 2 && symbol[0] == '~') return CpfgOp::PredefinedSurface;  // ~id (CPFG manual 6.7.1)
+  return CpfgOp::None;
+}
+
+bool cpfg_command_prefix(const std::string& start) {
+  if (start == "~") return true;
+  for (const auto& [symbol, op] : command_table())
+    if (symbol.size() > start.size() && symbol.compare(0, start.size(), start) == 0) return true;
+  return false;
 }
 
 CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::None), params_(types.size(), 0) {
@@ -64,6 +79,17 @@ CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::
       else size -= sizeof(const char*);
     }
     params_[id] = static_cast<std::uint8_t>(std::min<std::uint32_t>(size / 4, 255));
+    const std::string& name = types.name(m);
+    if (size == 0 && (name == "@" || name == "?" || name == "~")) ops_[id] = CpfgOp::Prefix;
+  }
+  // Queries read split: ? then P(x,y,z) (P H L U with two or three parameters).
+  bool split_query = false;
+  for (std::size_t id = rt::mid::PredefinedCount; id < types.size(); ++id)
+    split_query = split_query || (ops_[id] == CpfgOp::Prefix && types.name(static_cast<ModuleId>(id)) == "?");
+  for (std::size_t id = rt::mid::PredefinedCount; split_query && id < types.size(); ++id) {
+    const std::string& name = types.name(static_cast<ModuleId>(id));
+    if ((name == "P" || name == "H" || name == "L" || name == "U") && params_[id] >= 2)
+      split_queries_.push_back(static_cast<ModuleId>(id));
   }
 }
 
@@ -144,7 +170,7 @@ std::string format_cpfg_label(std::string_view format, const float* values, int 
 }
 
 std::vector<ModuleId> CpfgSymbols::query_modules() const {
-  std::vector<ModuleId> ids;
+  std::vector<ModuleId> ids = split_queries_;
   for (std::size_t id = 0; id < ops_.size(); ++id)
     if (is_query(ops_[id])) ids.push_back(static_cast<ModuleId>(id));
   return ids;
@@ -191,7 +217,26 @@ void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 
 
 void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uint32_t source_index, bool in_string) {
   using O = CpfgOp;
-  const CpfgOp op = cpfg_->op(id);
+  CpfgOp op = cpfg_->op(id);
+  // A command read a character a module: the characters so far and this one.
+  // Where they make no command, cpfg reads this module on its own.
+  if (!cpfg_pending_.empty()) {
+    const std::string joined = cpfg_pending_ + types_.name(id);
+    const CpfgOp whole = cpfg_op(joined);
+    if (whole != O::None && whole != O::Label) {  // @L is never read split: its text is @L's own
+      op = whole;
+      cpfg_pending_.clear();
+    } else if (cpfg_command_prefix(joined)) {
+      cpfg_pending_ = joined;
+      return;
+    } else {
+      cpfg_pending_.clear();
+    }
+  }
+  if (op == O::Prefix) {
+    cpfg_pending_ = types_.name(id);
+    return;
+  }
   if (op == O::None) return;  // cpfg ignores symbols that are not the turtle's
   const int n = cpfg_->params(id);
   from_ = Provenance{source_index, id};
@@ -229,7 +274,8 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
   // A generalized cylinder's strips (@Gc, .(strips), @Ge): its parameter or 1.
   auto strips = [&] { return n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1; };
   switch (op) {
-    case O::None: break;
+    case O::None:
+    case O::Prefix: break;
     case O::Push: push(); break;
     case O::Pop: pop(); break;
 

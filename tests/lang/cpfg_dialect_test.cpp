@@ -100,6 +100,18 @@ TEST(CpfgDialect, RightContextGoesThroughIgnoredBrackets) {
   EXPECT_EQ(r.string, "X[B]C");
 }
 
+TEST(CpfgDialect, ProductionsReachTheCharactersOfTurtleCommands) {
+  // cpfg's string holds a module a character: o(r) rewrites the o of
+  // @o(0.2); the P of ?P(x,y,z) has a context of its own; a predecessor's
+  // @o is @ then o. The turtle still reads @o and ?P.
+  const CpfgRun r = run_cpfg("characters",
+                             "Lsystem: 1\nderivation length: 2\nignore: F\nAxiom: AF@o(0.2)?P(0,0,0)G(1)\n"
+                             "o(r) --> o(r+1)\nA > @o(r) --> B(r)\nP(x,y,z) > G(t) --> P(x+10,y,z)G(t)\n"
+                             "G(t) --> G(t+1)\nendlsystem\n");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.string, "B(0.2)F@o(2.2)?P(0,1,0)G(1)G(2)G(3)");
+}
+
 // ---- stochastic productions -----------------------------------------------------------
 
 TEST(CpfgDialect, ProbabilitiesAreExpressionsSharedAmongTheProductionsThatApply) {
