@@ -8,6 +8,7 @@
 
 #include "lang/cpfg_expr.h"
 #include "lang/cpfg_lines.h"
+#include "lang/cpfg_random_code.h"
 
 namespace sylva::lang {
 namespace {
@@ -669,75 +670,26 @@ class CpfgParser {
   // The random streams' code, and their start in the Start statement.
   void random_streams() {
     const Pos first = lines_.front().pos.front();
-    // The stream of ran() and its kin restarts with every run.
-    std::string start = "sylva_cpfg_random = ::sylva::rt::cpfg::Random{}; ";
-    // The stream that chooses among stochastic productions is the C
-    // library's drand48. cpfg seeds it (seed48) only when its window opens;
-    // run in batch (-g), it never does, so drand48 starts from its zero state
-    // whatever seed: says. Sylva's strings are cpfg's batch strings.
-    if (std::any_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.stochastic; }))
-      start += "::sylva::rt::control.rand48 = 0; ";
-    std::string code = "namespace {\n";
-    bool own_streams = false;
-    for (const Block& b : blocks_) own_streams = own_streams || !b.homomorphism_seed.empty();
-    if (own_streams) {
-      // cpfg restarts a homomorphism's own stream (a seed: of 0 or more) each
-      // time it interprets the string: the engine asks for the interpretation
-      // depth once at the start of every interpretation pass.
-      code += "[[maybe_unused]] ::std::uint64_t sylva_cpfg_homomorphism_stream[" + std::to_string(blocks_.size()) + "];\n"
-              "int sylva_cpfg_restart_streams() {\n";
-      for (std::size_t k = 0; k < blocks_.size(); ++k) {
-        if (blocks_[k].homomorphism_seed.empty()) continue;
-        code += "  { const long s = " + blocks_[k].homomorphism_seed + "; if (s >= 0) sylva_cpfg_homomorphism_stream[" +
-                std::to_string(k) + "] = ::sylva::rt::cpfg::Stream::seeded(s); }\n";
-      }
-      code += "  return 0;\n}\n";
-      bool has_depth = false;
-      for (Item& item : model_.items) {
-        Setting* setting = std::get_if<Setting>(&item);
-        if (!setting || setting->kind != Setting::kInterpretationDepth) continue;
-        setting->expression.front().text = "(sylva_cpfg_restart_streams(), " + setting->expression.front().text + ")";
-        has_depth = true;
-      }
-      if (!has_depth)
-        model_.items.push_back(Setting{Setting::kInterpretationDepth, code_at(first, "(sylva_cpfg_restart_streams(), 1)"),
-                                       token_at(first)});
-    }
-    const bool stochastic = std::any_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.stochastic; });
-    if (stochastic) {
-      // The module's draw, the productions that apply with their
-      // probabilities (cpfg sums them in float), and the one chosen.
-      const std::string n = std::to_string(rules_.size() + 1);
-      code += "double sylva_cpfg_u = 0; int sylva_cpfg_chosen = -1; int sylva_cpfg_count = 0; float sylva_cpfg_total = 0;\n"
-              "struct { int rule; float p; } sylva_cpfg_applicable[" + n + "];\n"
-              "void sylva_cpfg_applies(int rule, float p) { sylva_cpfg_total += p; "
-              "sylva_cpfg_applicable[sylva_cpfg_count].rule = rule; sylva_cpfg_applicable[sylva_cpfg_count++].p = p; }\n";
-      // Only the modules of a stochastic L-system draw.
-      std::string draws;
-      if (blocks_.size() == 1) {
-        draws = "true";
-      } else {
-        draws = "false";
-        for (const Block& b : blocks_)
-          if (b.stochastic) draws += " || ::sylva::rt::control.current_group == " + std::to_string(b.label);
-      }
-      code += "void sylva_cpfg_before_module(::sylva::abi::ModuleId id) {\n"
-              "  if (id != ::sylva::abi::kNoModule) {\n"
-              "    sylva_cpfg_probing = true; sylva_cpfg_count = 0; sylva_cpfg_total = 0; sylva_cpfg_chosen = -1;\n"
-              "    if (" + draws + ") sylva_cpfg_u = ::sylva::rt::next_rand48();\n"
-              "    return;\n"
-              "  }\n"
-              "  sylva_cpfg_probing = false;\n"
-              "  float r = static_cast<float>(sylva_cpfg_total * sylva_cpfg_u);\n"
-              "  for (int k = 0; k < sylva_cpfg_count; ++k)\n"
-              "    if ((r -= sylva_cpfg_applicable[k].p) <= 0) { sylva_cpfg_chosen = sylva_cpfg_applicable[k].rule; break; }\n"
-              "}\n";
-      model_.cpfg_stochastic = true;
-    }
-    code += "}\n";
-    model_.items.insert(model_.items.begin() + 1, Code{verbatim(first, code)});
-    control_[ControlStatement::kStart] = start + control_[ControlStatement::kStart];
+    std::vector<cpfg::LsystemRandomness> lsystems;
+    for (const Block& b : blocks_) lsystems.push_back(cpfg::LsystemRandomness{b.label, b.stochastic, b.homomorphism_seed});
+    const cpfg::RandomCode code = cpfg::random_code(lsystems, rules_.size());
+    model_.items.insert(model_.items.begin() + 1, Code{verbatim(first, code.declarations)});
+    model_.cpfg_stochastic = code.chooses;
+    control_[ControlStatement::kStart] = code.start + control_[ControlStatement::kStart];
     if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = first;
+    if (!code.restarts_streams) return;
+    // The engine asks for the interpretation depth once at the start of
+    // every interpretation pass: the homomorphisms' streams restart there.
+    bool has_depth = false;
+    for (Item& item : model_.items) {
+      Setting* setting = std::get_if<Setting>(&item);
+      if (!setting || setting->kind != Setting::kInterpretationDepth) continue;
+      setting->expression.front().text = "(sylva_cpfg_restart_streams(), " + setting->expression.front().text + ")";
+      has_depth = true;
+    }
+    if (!has_depth)
+      model_.items.push_back(
+          Setting{Setting::kInterpretationDepth, code_at(first, "(sylva_cpfg_restart_streams(), 1)"), token_at(first)});
   }
 
   void warn(Pos p, const std::string& text) {
