@@ -142,6 +142,11 @@ const std::map<std::string, Function>& functions() {
       {"curveX", {"sylva_cpfg_curveX", 2, 2}}, {"curveY", {"sylva_cpfg_curveY", 2, 2}},
       {"curveZ", {"sylva_cpfg_curveZ", 2, 2}}, {"curveGAL", {"sylva_cpfg_curveGAL", 1, 1}},
       {"stop", {"sylva_cpfg_stop", 0, 1}},
+      // The view volume (CPFG manual 5.6), with cpfg's dummy argument.
+      {"vvXmin", {"sylva_cpfg_vv<0>", 1, 1}}, {"vvXmax", {"sylva_cpfg_vv<1>", 1, 1}},
+      {"vvYmin", {"sylva_cpfg_vv<2>", 1, 1}}, {"vvYmax", {"sylva_cpfg_vv<3>", 1, 1}},
+      {"vvZmin", {"sylva_cpfg_vv<4>", 1, 1}}, {"vvZmax", {"sylva_cpfg_vv<5>", 1, 1}},
+      {"vvScale", {"sylva_cpfg_vv<6>", 1, 1}},
   };
   return table;
 }
@@ -216,7 +221,7 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
   }
   auto it = functions().find(name.text);
   if (it == functions().end()) {
-    static const std::set<std::string> later = {"inblob", "vvXmin", "vvXmax", "vvYmin", "vvYmax", "vvymax", "vvZmin", "vvZmax"};
+    static const std::set<std::string> later = {"inblob"};
     if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
     c.fail_at(name.pos, "unknown function '" + name.text + "'");
   }
@@ -466,6 +471,12 @@ inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast
 inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveGAL(double id) { return curveLength(static_cast<int>(id)); }
+template <int K>
+double sylva_cpfg_vv(double) {
+  double out[7] = {0, 0, 0, 0, 0, 0, 1};
+  ::sylva::rt::ask_inputs(::sylva::abi::kQueryCpfgViewVolume, 0, nullptr, out, "the view volume");
+  return out[K];
+}
 // stop(n) (CPFG manual 5.6): the run ends after this step; without a window
 // to keep drawing in, n = 1 ("draw and continue") ends it the same way.
 inline double sylva_cpfg_stop(double = 0) {

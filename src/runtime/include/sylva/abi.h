@@ -173,6 +173,9 @@ enum InputQuery : int {
   kQueryCurveRecalculate,   // in: -                  out: -
   kQueryCurveReset,         // in: -                  out: -
   kQueryParameter,          // in: -                  out: value (val, LPFG manual 6.2.1)
+  // cpfg's vvXmin() ... vvScale() as a batch run has them: no window, so the
+  // x and y extents are 0; the view file's front and back distance and scale.
+  kQueryCpfgViewVolume,     // in: -                  out: xmin, xmax, ymin, ymax, zmin, zmax, scale
 };
 
 struct ModelDescriptor {
