@@ -155,6 +155,14 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
     case abi::kQueryCurveRecalculate:
     case abi::kQueryCurveReset:
       return change_curve(query, id, in);
+    case abi::kQueryCpfgViewVolume: {
+      // cpfg's defaults without a view file's front and back distance: -100000 and 100000.
+      const geometry::ViewParameters view = inputs.view ? inputs.view->view(0) : geometry::ViewParameters{};
+      const double values[7] = {0, 0, 0, 0, view.front_distance.value_or(-100000.0f),
+                                view.back_distance.value_or(100000.0f), view.scale};
+      for (int k = 0; k < 7; ++k) out[k] = values[k];
+      return true;
+    }
     case abi::kQueryParameter:
     case abi::kQueryFunction:
     case abi::kQueryTimelineFunction:

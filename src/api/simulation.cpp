@@ -80,6 +80,7 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
   for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
   build::BuiltModel built = build::build_model(model_path, build);
+  for (const std::string& warning : built.warnings) tell(messages, warning + "\n");
   compiled_now_ = built.compiled_now;
   library_ = std::make_unique<build::ModelLibrary>(built.library_path);
 
@@ -87,6 +88,7 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   answers_ = std::make_unique<InputAnswers>(*inputs_);
   control.inputs = answers_.get();
   control.input_query = &answer_input_query;
+  control.cpfg_window_seeding = options.cpfg_window_seeding;
   const derive::Derivation::MessageSink environment_messages = messages;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
   if (derivation_->types().cpfg()) {

@@ -47,6 +47,10 @@ struct SimulationOptions {
   // functions follow it. A path alone is recognised by its extension.
   std::vector<io::InputFile> input_files;
   EnvironmentOptions environment = {};
+  // cpfg models: choose among stochastic productions from seed: as cpfg's
+  // window does. cpfg in batch (-g) ignores seed: and so, by default, does
+  // Sylva, whose runs give cpfg's batch strings.
+  bool cpfg_window_seeding = false;
 };
 
 class Simulation {

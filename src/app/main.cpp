@@ -51,6 +51,7 @@ struct RunOptions {
   std::vector<std::string> outputs;
   sylva::OutputOptions output;
   sylva::EnvironmentOptions environment;
+  bool cpfg_window_seeding = false;
 };
 
 // VerifyString: (LPFG manual 10.4). On a mismatch lpfg's two files of module
@@ -82,6 +83,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   }
   sylva::SimulationOptions options{o.build, r.inputs};
   options.environment = r.environment;
+  options.cpfg_window_seeding = r.cpfg_window_seeding;
   sylva::Simulation simulation(r.model, options);
   simulation.set_output_options(r.output);
   sylva::derive::Derivation& d = simulation.derivation();
@@ -168,6 +170,9 @@ int main(int argc, char** argv) {
       ->type_name("SECONDS");
   run->add_flag("--clean-ea20,--cleanEA20", r.environment.clean_ea20,
                 "Zero EA20's values before the environment's answers are written (lpfg's -cleanEA20)");
+  run->add_flag("--cpfg-window-seeding", r.cpfg_window_seeding,
+                "cpfg models: choose among stochastic productions from seed: as cpfg's window does "
+                "(cpfg -g, and Sylva by default, ignore seed:)");
   run->add_option("--steps,-n", r.steps, "Number of derivation steps (default: the model's derivation length)")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {

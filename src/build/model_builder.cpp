@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped whenever generated code or the runtime's contract changes.
-constexpr const char* kCacheFormat = "sylva-model-cache-16";
+constexpr const char* kCacheFormat = "sylva-model-cache-18";
 
 const std::vector<std::string> kCompileFlags = {
     "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",
@@ -111,7 +111,7 @@ std::string direct_key(const std::string& model_path, const std::string& source,
 }
 
 // A manifest records which library a model built into and the files it read.
-bool manifest_still_valid(const fs::path& manifest, std::string* library) {
+bool manifest_still_valid(const fs::path& manifest, std::string* library, std::vector<std::string>* warnings) {
   std::ifstream in(manifest);
   if (!in) return false;
   std::string line;
@@ -120,6 +120,8 @@ bool manifest_still_valid(const fs::path& manifest, std::string* library) {
     if (line.rfind("library ", 0) == 0) {
       *library = line.substr(8);
       have_library = true;
+    } else if (line.rfind("warning ", 0) == 0) {
+      warnings->push_back(line.substr(8));
     } else if (line.rfind("dep ", 0) == 0) {
       std::size_t space = line.find(' ', 4);
       if (space == std::string::npos) return false;
@@ -176,7 +178,8 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   std::string source = read_file(model_path);
   fs::path manifest = r.cache_dir / (direct_key(model_path, source, r) + ".manifest");
   std::string library;
-  if (manifest_still_valid(manifest, &library)) return BuiltModel{library, false};
+  std::vector<std::string> cached_warnings;
+  if (manifest_still_valid(manifest, &library, &cached_warnings)) return BuiltModel{library, false, cached_warnings};
 
   lang::Translation translation = lang::translate_file(model_path, translator_options(r));
   ContentHash h;
@@ -186,7 +189,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   h.add(translation.cpp);
   std::string key = h.hex();
   fs::path so = r.cache_dir / (key + ".so");
-  BuiltModel built{so.string(), false};
+  BuiltModel built{so.string(), false, translation.warnings};
 
   if (!fs::exists(so)) {
     fs::path ii = r.cache_dir / (key + ".ii");
@@ -209,6 +212,8 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   }
 
   std::string manifest_text = "library " + so.string() + "\n";
+  for (const std::string& warning : translation.warnings)
+    if (warning.find('\n') == std::string::npos) manifest_text += "warning " + warning + "\n";
   for (const std::string& dep : translation.dependencies) {
     std::string path = fs::absolute(dep, ec).string();
     manifest_text += "dep " + file_stamp(path) + " " + path + "\n";

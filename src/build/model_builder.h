@@ -20,6 +20,9 @@ struct BuildOptions {
 struct BuiltModel {
   std::string library_path;
   bool compiled_now = false;  // false: taken from the cache
+  // The translator's warnings (kept with the cached library, so a cached
+  // model warns as it did when it was built).
+  std::vector<std::string> warnings;
 };
 
 // Throws ModelError with the model's file and line for translation errors and

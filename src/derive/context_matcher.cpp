@@ -99,9 +99,10 @@ bool match_right_context(const StringView& s, ContextCursor& from, const ModuleI
         c.at = s.next(c.at);
         break;
       }
-      if (id == kSB) {
+      const bool flat = skipped && (id == kSB || id == kEB) && skipped[id] == kFlatBracket;
+      if (id == kSB && !flat) {
         if (!skip_branch_forward(s, c)) return false;  // a lateral branch: topologically not in the way
-      } else if (want == kEB || (skipped && id != kEB && skipped[id])) {
+      } else if (flat || want == kEB || (skipped && id != kEB && skipped[id])) {
         c.at = s.next(c.at);  // the rest of a branch the pattern ends, or an ignored module
       } else {
         return false;

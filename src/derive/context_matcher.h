@@ -14,6 +14,9 @@ namespace sylva::derive {
 // `skipped[id]` is nonzero for modules context matching passes over; null
 // means every module counts.
 using SkipTable = const std::uint8_t*;
+// The value of `skipped[SB]` or `skipped[EB]` where a right context steps
+// over that bracket itself, into or out of a branch (cpfg's ignored [ and ]).
+inline constexpr std::uint8_t kFlatBracket = 2;
 
 // Where matching stands in a string: a byte offset, and whether it has gone
 // once across the ends of a ring (it may not go across a second time, so a

@@ -55,7 +55,11 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     const abi::ContextFilter& filter = model.filters[f];
     std::vector<std::uint8_t> skipped(model.module_count, filter.consider ? 1 : 0);
     for (std::uint32_t k = 0; k < filter.count; ++k) skipped[filter.ids[k]] = filter.consider ? 0 : 1;
-    skipped[rt::mid::SB] = skipped[rt::mid::EB] = 0;
+    // Brackets keep the branching structure, except where cpfg reads a right
+    // context past an ignored [ or ] as past any ignored symbol (kFlatBracket).
+    const bool cpfg = (model.flags & abi::kModelCpfg) != 0;
+    for (ModuleId bracket : {rt::mid::SB, rt::mid::EB})
+      skipped[bracket] = cpfg && skipped[bracket] ? kFlatBracket : 0;
     skip_tables_.push_back(std::move(skipped));
   }
   sub_lsystems_ = (model.flags & abi::kModelSubLsystems) != 0;
@@ -78,7 +82,9 @@ bool Derivation::predecessor_holds(const std::vector<ModuleId>& ids) const {
 }
 
 void Derivation::add_query_modules(const std::vector<ModuleId>& ids) {
-  if (!ids.empty() && predecessor_holds(ids)) uses_query_modules_ = true;
+  // cpfg interprets the string after every step wherever a query module
+  // occurs in the L-system, read by a production or not (its checkEnvironment).
+  if (!ids.empty()) uses_query_modules_ = true;
 }
 
 Derivation::~Derivation() {
@@ -405,11 +411,16 @@ void Derivation::derive_forward() {
     if (pos > run) next_.append(src.data + run, pos - run);
   };
   const auto before_module = model_.before_module;
+  const bool probe = before_module && (model_.flags & abi::kModelProbeProductions) != 0;
   reset_lsystems();
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     const bool cut = id == rt::mid::Cut;
-    if (before_module && !cut) before_module(id);
+    // cpfg draws for every module of a stochastic L-system, a cut included.
+    if (before_module && (probe || !cut)) {
+      if (sub_lsystems_) control().current_group = current_group();
+      before_module(id);
+    }
     if (!cut && rules_.forward(RuleKind::Production, id).empty()) {
       if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
       pos = src.next(pos);
@@ -422,6 +433,12 @@ void Derivation::derive_forward() {
       pos = find_unmatched_end(src, pos);
     } else {
       std::size_t consumed = 0;
+      if (probe) {
+        // The rules that apply tell the model their probabilities; nothing is produced.
+        apply_forward(RuleKind::Production, src, pos, probe_out_, next_, true, &consumed);
+        probe_out_.clear();
+        before_module(abi::kNoModule);
+      }
       if (apply_forward(RuleKind::Production, src, pos, next_, next_, true, &consumed)) {
         pos = consumed;
       } else {

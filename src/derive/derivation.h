@@ -87,7 +87,8 @@ class Derivation {
   // More module types that the query pass fills, beyond the four predefined
   // ones: the interpreter of a model whose own module types are queries
   // (cpfg's ?P ?H ?L ?U) names them here, before the axiom, so the engine
-  // need not know them.
+  // need not know them. Any such module makes the query pass run, as cpfg
+  // fills them whether or not a production reads them.
   void add_query_modules(const std::vector<ModuleId>& ids);
   // Called after the axiom and after every step (after decomposition, before
   // EndEach) when the model uses query modules.
@@ -150,6 +151,7 @@ class Derivation {
   ModuleString string_;
   ModuleString next_;
   ModuleString successor_;  // backward derivation builds each successor here
+  ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;
   std::deque<ModuleString> expansion_scratch_;  // one per decomposition depth
   std::set<std::pair<int, ModuleId>> depth_warnings_;

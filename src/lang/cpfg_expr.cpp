@@ -10,17 +10,32 @@ struct Tok {
   enum Kind { kNumber, kIdent, kString, kOp, kEnd } kind = kEnd;
   std::string text;
   Pos pos;
+  std::size_t pos_index = 0;  // where it starts in the line
   std::size_t end = 0;
 };
 
 bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// A character no token of cpfg's expressions starts with: cpfg's lexer
+// passes it by (flex echoes it). A macro continued with "\\" leaves a "\".
+bool stray(const std::string& s, std::size_t i) {
+  const char ch = s[i];
+  if (ch == '|') return i + 1 >= s.size() || s[i + 1] != '|';
+  if (ch == '.') return i + 1 >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i + 1]));
+  return ch == '\\' || ch == '@' || ch == '#' || ch == '$' || ch == '\'' || ch == '~' || ch == '`';
+}
+
 Tok read_token(Cursor& c) {
   c.skip_space();
+  while (c.at() < c.text().size() && stray(c.text(), c.at())) {
+    c.set(c.at() + 1);
+    c.skip_space();
+  }
   Tok t;
   t.pos = c.pos();
   const std::size_t start = c.at();
+  t.pos_index = start;
   const std::string& s = c.text();
   std::size_t i = start;
   if (i >= s.size()) {
@@ -74,6 +89,10 @@ Tok peek_token(Cursor& c) {
 }
 
 Tok next_token(Cursor& c) {
+  c.skip_space();
+  for (std::size_t i = c.at(); i < c.text().size() && (stray(c.text(), i) || c.text()[i] == ' ' || c.text()[i] == '\t'); ++i)
+    if (stray(c.text(), i))
+      c.warn_at(c.pos_at(i), std::string("'") + c.text()[i] + "' read past: it starts no part of an expression (as in cpfg)");
   Tok t = read_token(c);
   c.set(t.end);
   return t;
@@ -123,6 +142,11 @@ const std::map<std::string, Function>& functions() {
       {"curveX", {"sylva_cpfg_curveX", 2, 2}}, {"curveY", {"sylva_cpfg_curveY", 2, 2}},
       {"curveZ", {"sylva_cpfg_curveZ", 2, 2}}, {"curveGAL", {"sylva_cpfg_curveGAL", 1, 1}},
       {"stop", {"sylva_cpfg_stop", 0, 1}},
+      // The view volume (CPFG manual 5.6), with cpfg's dummy argument.
+      {"vvXmin", {"sylva_cpfg_vv<0>", 1, 1}}, {"vvXmax", {"sylva_cpfg_vv<1>", 1, 1}},
+      {"vvYmin", {"sylva_cpfg_vv<2>", 1, 1}}, {"vvYmax", {"sylva_cpfg_vv<3>", 1, 1}},
+      {"vvZmin", {"sylva_cpfg_vv<4>", 1, 1}}, {"vvZmax", {"sylva_cpfg_vv<5>", 1, 1}},
+      {"vvScale", {"sylva_cpfg_vv<6>", 1, 1}},
   };
   return table;
 }
@@ -197,7 +221,7 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
   }
   auto it = functions().find(name.text);
   if (it == functions().end()) {
-    static const std::set<std::string> later = {"inblob", "vvXmin", "vvXmax", "vvYmin", "vvYmax", "vvymax", "vvZmin", "vvZmax"};
+    static const std::set<std::string> later = {"inblob"};
     if (later.count(name.text)) c.fail_at(name.pos, "the cpfg function " + name.text + " is not supported yet");
     c.fail_at(name.pos, "unknown function '" + name.text + "'");
   }
@@ -253,7 +277,15 @@ std::string primary(Cursor& c, Scope& scope) {
     }
     if (scope.formals.count(t.text) || scope.locals.count(t.text) || scope.globals.count(t.text))
       return variable(t.text);
-    c.fail_at(t.pos, "unknown variable '" + t.text + "'");
+    // cpfg warns ("Identifier ... not previously defined") and reads a new
+    // variable of value 0.
+    if (scope.warnings) {
+      const SourceLocation at = c.location(t.pos);
+      scope.warnings->push_back(at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                                ": warning: unknown variable '" + t.text + "' read as 0 (as cpfg does)");
+    }
+    scope.locals.insert(t.text);
+    return variable(t.text);
   }
   expected(c, t, "an expression");
 }
@@ -349,16 +381,27 @@ std::string statement(Cursor& c, Scope& scope) {
     if (peek_token(c).text == ";") next_token(c);
     return "do " + body + " while (" + cond + ");";
   }
-  if (t.kind != Tok::kIdent) expected(c, t, "a statement (an assignment, if, while or do)");
+  // An assignment (name = e; or name[i] = e;), or else an expression whose
+  // value is dropped (cpfg's "procedure": f(x); and also x - y;).
   Tok after = peek_token(c);
-  if (after.text == "(") {
-    std::string text = call(c, scope, t);
-    expect_op(c, ";");
-    return text + ";";
+  bool assignment = t.kind == Tok::kIdent && after.kind == Tok::kOp && after.text == "=";
+  if (t.kind == Tok::kIdent && after.text == "[" && scope.arrays.count(t.text)) {
+    const std::size_t index_at = c.at();
+    Scope probe = scope;
+    probe.warnings = nullptr;
+    array_index(c, probe);
+    assignment = peek_token(c).text == "=";
+    c.set(index_at);
+  }
+  if (!assignment) {
+    c.set(t.pos_index);
+    std::string value = ternary(c, scope);
+    Tok semi = next_token(c);
+    if (semi.kind != Tok::kOp || semi.text != ";") expected(c, semi, "';' after the statement");
+    return "(void)(" + value + ");";
   }
   std::string target;
   if (after.text == "[") {
-    if (!scope.arrays.count(t.text)) c.fail_at(t.pos, "'" + t.text + "' is not an array");
     target = variable(t.text) + array_index(c, scope);
   } else {
     if (scope.arrays.count(t.text)) c.fail_at(t.pos, "array " + t.text + " needs an index");
@@ -413,70 +456,27 @@ inline double sylva_cpfg_atan(double x, double y) { return ::std::atan2(y, x) / 
 inline double sylva_cpfg_atan2(double y, double x) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
 inline double sylva_cpfg_pow(double x, double y) { return ::std::pow(x, y); }
 inline double sylva_cpfg_sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
-inline double sylva_cpfg_ran(double x) { return x * ::sylva::rt::next_rand48(); }
-// cpfg's nran (cpfg/utility.c): the polar method, keeping the second value
-// of each pair for the next call. The pair's state starts "full" with 0, so
-// the first call of a run returns the mean; srand() empties it.
-inline int sylva_cpfg_nran_kept = 10;
-inline double sylva_cpfg_nran_value = 0;
+// ran, nran, bran, biran and srand: cpfg's own stream and methods (cpfg_random.h).
+::sylva::rt::cpfg::Random sylva_cpfg_random;
+inline double sylva_cpfg_ran(double x) { return sylva_cpfg_random.ran(x); }
 inline double sylva_cpfg_srand(double seed) {
-  ::sylva::rt::control.rand48 = ((static_cast<::std::uint64_t>(static_cast<long>(seed)) & 0xFFFFFFFFULL) << 16) | 0x330EULL;
-  sylva_cpfg_nran_kept = 0;
+  sylva_cpfg_random.srand(seed);
   return 0.0;
 }
-inline double sylva_cpfg_nran(double mean, double sd) {
-  if (sylva_cpfg_nran_kept == 0) {
-    double v1, v2, rsq;
-    do {
-      v1 = 2.0 * ::sylva::rt::next_rand48() - 1.0;
-      v2 = 2.0 * ::sylva::rt::next_rand48() - 1.0;
-      rsq = v1 * v1 + v2 * v2;
-    } while (rsq >= 1.0 || rsq == 0.0);
-    const double fac = ::std::sqrt(-2.0 * ::std::log(rsq) / rsq);
-    sylva_cpfg_nran_value = v1 * fac;
-    sylva_cpfg_nran_kept = 1;
-    return v2 * fac * sd + mean;
-  }
-  sylva_cpfg_nran_kept = 0;
-  return sylva_cpfg_nran_value * sd + mean;
-}
-// bran(a,b): a beta variate, X/(X+Y) of gamma variates X ~ G(a), Y ~ G(b)
-// (Marsaglia and Tsang's method); NaN unless a > 0 and b > 0.
-inline double sylva_cpfg_uniform_open() {
-  double u;
-  do u = ::sylva::rt::next_rand48();
-  while (u <= 0);
-  return u;
-}
-inline double sylva_cpfg_gamma(double a) {
-  if (a < 1) return sylva_cpfg_gamma(a + 1) * ::std::pow(sylva_cpfg_uniform_open(), 1 / a);
-  const double d = a - 1.0 / 3.0, c = 1 / ::std::sqrt(9 * d);
-  while (true) {
-    const double x = sylva_cpfg_nran(0, 1), v0 = 1 + c * x;
-    if (v0 <= 0) continue;
-    const double v = v0 * v0 * v0, u = sylva_cpfg_uniform_open();
-    if (u < 1 - 0.0331 * x * x * x * x || ::std::log(u) < 0.5 * x * x + d * (1 - v + ::std::log(v))) return d * v;
-  }
-}
-inline double sylva_cpfg_bran(double a, double b) {
-  if (!(a > 0) || !(b > 0)) return ::std::nan("");
-  const double x = sylva_cpfg_gamma(a), y = sylva_cpfg_gamma(b);
-  // Both too small to tell apart (a and b near 0): the limit, 0 or 1.
-  if (!(x + y > 0)) return ::sylva::rt::next_rand48() < a / (a + b) ? 1.0 : 0.0;
-  return x / (x + y);
-}
-// biran(n,p): how many of n uniform numbers fall below p.
-inline double sylva_cpfg_biran(double n, double p) {
-  const long trials = ::std::lround(n);
-  long hits = 0;
-  for (long k = 0; k < trials; ++k) hits += ::sylva::rt::next_rand48() < p;
-  return static_cast<double>(hits);
-}
+inline double sylva_cpfg_nran(double mean, double sd) { return sylva_cpfg_random.nran(mean, sd); }
+inline double sylva_cpfg_bran(double a, double b) { return sylva_cpfg_random.bran(a, b); }
+inline double sylva_cpfg_biran(double n, double p) { return sylva_cpfg_random.biran(n, p); }
 inline double sylva_cpfg_func(double id, double x) { return ::sylva::rt::cpfg_func(static_cast<int>(id), x); }
 inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
 inline double sylva_cpfg_curveGAL(double id) { return curveGAL(static_cast<int>(id)); }
+template <int K>
+double sylva_cpfg_vv(double) {
+  double out[7] = {0, 0, 0, 0, 0, 0, 1};
+  ::sylva::rt::ask_inputs(::sylva::abi::kQueryCpfgViewVolume, 0, nullptr, out, "the view volume");
+  return out[K];
+}
 // stop(n) (CPFG manual 5.6): the run ends after this step; without a window
 // to keep drawing in, n = 1 ("draw and continue") ends it the same way.
 inline double sylva_cpfg_stop(double = 0) {
@@ -563,7 +563,8 @@ void sylva_cpfg_format_label(const unsigned char* params, ::sylva::abi::TextSink
     out->write(text, static_cast<::std::size_t>(n));
   }
 }
-[[maybe_unused]] double sylva_cpfg_r = 0;  // the stochastic draw for the module being rewritten
+// True while the derivation probes which productions apply (kModelProbeProductions).
+[[maybe_unused]] bool sylva_cpfg_probing = false;
 }  // namespace
 )";
 }

@@ -17,9 +17,8 @@ struct Pos {
   int column = 0;
 };
 
-// One logical line of the L-system file: physical lines joined (a line that
-// starts with white space continues the previous one), with each character's
-// position.
+// One logical line of the L-system file: physical lines joined as cpfg joins
+// them (cpfg_lines.h), with each character's position.
 struct Line {
   std::string text;
   std::vector<Pos> pos;  // one per character, plus one for the end
@@ -27,7 +26,9 @@ struct Line {
 
 class Cursor {
  public:
-  Cursor(const Line& line, const std::vector<std::string>& files) : line_(line), files_(files) {}
+  // `warnings` receives "file:line:column: warning: ..." for what is read past.
+  Cursor(const Line& line, const std::vector<std::string>& files, std::vector<std::string>* warnings = nullptr)
+      : line_(line), files_(files), warnings_(warnings) {}
 
   std::size_t at() const { return i_; }
   void set(std::size_t i) { i_ = i; }
@@ -56,10 +57,17 @@ class Cursor {
   [[noreturn]] void fail(const std::string& message) const;
   [[noreturn]] void fail_at(Pos p, const std::string& message) const { throw ModelError(location(p), message); }
   const std::string& text() const { return line_.text; }
+  void warn_at(Pos p, const std::string& message) const {
+    if (!warnings_) return;
+    const SourceLocation at = location(p);
+    warnings_->push_back(at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                         ": warning: " + message);
+  }
 
  private:
   const Line& line_;
   const std::vector<std::string>& files_;
+  std::vector<std::string>* warnings_;
   std::size_t i_ = 0;
 };
 
@@ -70,6 +78,8 @@ struct Scope {
   std::set<std::string> globals;  // assigned in Start/End blocks
   std::set<std::string> arrays;   // define: { array ... }
   bool control_block = false;     // assignments to new names make globals
+  // Where warnings go ("file:line:column: warning: ..."); none: dropped.
+  std::vector<std::string>* warnings = nullptr;
 };
 
 // The C++ name of a cpfg variable (kept apart from C++ keywords and helpers).

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "lang/cpfg_expr.h"
+#include "lang/cpfg_lines.h"
+#include "lang/cpfg_random_code.h"
 
 namespace sylva::lang {
 namespace {
@@ -13,68 +16,6 @@ using cpfg::Cursor;
 using cpfg::Line;
 using cpfg::Pos;
 using cpfg::Scope;
-
-// ---- logical lines -------------------------------------------------------------
-
-std::vector<Line> read_lines(const std::string& text, std::vector<std::string>& files, const std::string& main_file) {
-  std::vector<Line> lines;
-  std::istringstream in(text);
-  std::string raw;
-  int file = 0, line = 0;
-  auto file_index = [&](const std::string& name) {
-    auto it = std::find(files.begin(), files.end(), name);
-    if (it != files.end()) return static_cast<int>(it - files.begin());
-    files.push_back(name);
-    return static_cast<int>(files.size() - 1);
-  };
-  files.push_back(main_file);
-  int brace_depth = 0;  // define: and Start: blocks may span lines
-  while (std::getline(in, raw)) {
-    if (raw.size() >= 2 && raw[0] == '#' && (raw[1] == ' ' || std::isdigit(static_cast<unsigned char>(raw[1])))) {
-      std::istringstream marker(raw.substr(1));
-      int n = 0;
-      std::string name;
-      marker >> n >> std::ws;
-      std::getline(marker, name);
-      const std::size_t q = name.find('"'), e = name.find('"', q + 1);
-      if (q != std::string::npos && e != std::string::npos) file = file_index(name.substr(q + 1, e - q - 1));
-      line = n;
-      continue;
-    }
-    const int this_line = line++;
-    if (raw.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const bool continues = !lines.empty() && (raw[0] == ' ' || raw[0] == '\t' || brace_depth > 0);
-    if (!continues) lines.emplace_back();
-    Line& l = lines.back();
-    if (continues) {
-      l.text += ' ';
-      l.pos.push_back(l.pos.empty() ? Pos{file, this_line, 1} : l.pos.back());
-    } else {
-      brace_depth = 0;
-    }
-    for (std::size_t k = 0; k < raw.size(); ++k) {
-      if (raw[k] == '\r') continue;
-      l.text += raw[k];
-      l.pos.push_back(Pos{file, this_line, static_cast<int>(k) + 1});
-    }
-    // Only statements that take a { } block continue to its end.
-    std::string lower;
-    for (char ch : l.text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    std::size_t b = lower.find_first_not_of(" \t");
-    const bool block_statement = b != std::string::npos &&
-                                 (lower.compare(b, 7, "define:") == 0 || lower.compare(b, 5, "start") == 0 ||
-                                  lower.compare(b, 3, "end") == 0);
-    if (block_statement) {
-      int depth = 0;
-      for (char ch : l.text) depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
-      brace_depth = depth;
-    } else {
-      brace_depth = 0;
-    }
-  }
-  for (Line& l : lines) l.pos.push_back(Pos{l.pos.back().file, l.pos.back().line, l.pos.back().column + 1});
-  return lines;
-}
 
 Token token_at(Pos p, std::string text = {}) {
   Token t;
@@ -111,10 +52,13 @@ std::string mangle(const std::string& symbol, std::size_t params) {
 
 class CpfgParser {
  public:
-  CpfgParser(const std::string& text, const std::string& main_file) {
+  // `split`: the multi-character turtle symbols (@o, ?P ...) to read as one
+  // module a character, as cpfg's string holds them (see parse_cpfg).
+  CpfgParser(const std::string& text, const std::string& main_file, std::set<std::string> split = {})
+      : split_(std::move(split)) {
     model_.main_file = main_file;
     model_.cpfg = true;
-    lines_ = read_lines(text, model_.files, main_file);
+    lines_ = cpfg::read_logical_lines(text, model_.files, main_file);
     model_.modules = predefined_modules();
     for (std::size_t k = 0; k < model_.modules.size(); ++k) module_index_[model_.modules[k].name] = k;
     model_.modules[module_index_.at("SB")].display_name = "[";
@@ -134,6 +78,19 @@ class CpfgParser {
     return std::move(model_);
   }
 
+  // The multi-character symbols of the model that hold a character some
+  // production names as a module of its own (o(r) beside @o(0.2)): in cpfg
+  // both are the same module o, so those symbols must be read split.
+  std::set<std::string> symbols_to_split() const {
+    std::set<std::string> split;
+    for (const auto& [sym, names] : by_symbol_) {
+      if (sym.size() < 2 || sym == "@L" || (sym[0] != '@' && sym[0] != '?' && sym[0] != '~')) continue;
+      for (char ch : sym)
+        if (lone_pattern_symbols_.count(ch)) split.insert(sym);
+    }
+    return split;
+  }
+
  private:
   static Token verbatim(Pos p, const std::string& text) {
     Token t = token_at(p, text);
@@ -141,10 +98,19 @@ class CpfgParser {
     return t;
   }
 
+  // The names an expression may use outside a production: the globals and arrays.
+  Scope new_scope() {
+    Scope scope;
+    scope.globals = globals_;
+    scope.arrays = arrays_;
+    scope.warnings = &model_.warnings;
+    return scope;
+  }
+
   // Names assigned (or read by fscan) in Start/End blocks are global (CPFG manual 4.1).
   void collect_globals() {
     for (const Line& line : lines_) {
-      Cursor c(line, model_.files);
+      Cursor c(line, model_.files, &model_.warnings);
       std::string key;
       if (!keyword(c, &key) || (key != "start" && key != "starteach" && key != "endeach" && key != "end")) continue;
       const std::string& s = line.text;
@@ -210,7 +176,7 @@ class CpfgParser {
   }
 
   void statement(const Line& line) {
-    Cursor c(line, model_.files);
+    Cursor c(line, model_.files, &model_.warnings);
     const Pos at = c.pos();
     std::string key;
     const bool has_key = keyword(c, &key);
@@ -234,7 +200,9 @@ class CpfgParser {
       const int label = digits.empty() ? 0 : std::stoi(digits);
       for (const Block& b : blocks_)
         if (b.label == label) c.fail_at(lp, "a second L-system with label " + std::to_string(label));
-      blocks_.push_back(Block{label, {}, false, {}, false});
+      Block block;
+      block.label = label;
+      blocks_.push_back(block);
       seen_lsystem_ = true;
       seen_end_ = false;
       section_ = kProductions;
@@ -248,9 +216,9 @@ class CpfgParser {
     // Only the main L-system's axiom, derivation length and depths are used;
     // a sub-L-system's are read and dropped (CPFG manual 7.2).
     if (!main_block && (key == "derivationlength" || key == "maximumdepth" || key == "ringlsystem")) {
-      Scope scope;
-      scope.globals = globals_;
+      Scope scope = new_scope();
       if (key != "ringlsystem") cpfg::expression(c, scope);
+      globals_.insert(scope.locals.begin(), scope.locals.end());
       return;
     }
     if (!main_block && key == "axiom") {
@@ -273,34 +241,38 @@ class CpfgParser {
       model_.items.push_back(std::move(axiom));
     } else if (key == "ignore" || key == "consider") {
       Block& block = blocks_.back();
-      if (!block.filter_symbols.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
+      if (!block.filter_chars.empty()) c.fail_at(at, "only one ignore: or consider: statement is supported");
       block.filter_consider = key == "consider";
       block.filter_at = token_at(at);
-      while (!c.done()) block.filter_symbols.push_back(symbol(c));
+      // Characters, as cpfg's ignore table has them.
+      while (!c.done()) block.filter_chars.insert(c.get());
     } else if (key == "seed") {
-      if (section_ == kHomomorphism) c.fail_at(at, "seed: in a homomorphism is not supported yet");
       if (section_ == kDecomposition) c.fail_at(at, "seed: cannot be used in a decomposition (CPFG manual 4.4)");
-      c.skip_space();
-      const Pos p = c.pos();
-      std::string digits;
-      if (c.peek() == '-') digits += c.get();
-      while (std::isdigit(static_cast<unsigned char>(c.peek()))) digits += c.get();
-      if (digits.empty() || digits == "-" || !c.done()) c.fail_at(p, "expected an integer seed after 'seed:'");
-      // One random stream for all L-systems, seeded by the first seed: (the
-      // main L-system's, when it has one): the draw for each module of the
-      // string comes from it in string order whichever L-system rewrites it.
-      if (!has_seed_) seed_ = std::stol(digits);
-      has_seed_ = true;
-      blocks_.back().stochastic = true;
+      if (section_ == kHomomorphism && blocks_.back().homomorphism_rules)
+        c.fail_at(at, "a homomorphism's seed: comes before its productions");
+      // An expression, taken as an integer.
+      Scope scope = new_scope();
+      const std::string seed = "static_cast<long>(static_cast<int>(" + cpfg::expression(c, scope) + "))";
+      if (!c.done()) c.fail("expected the end of the seed: statement");
+      globals_.insert(scope.locals.begin(), scope.locals.end());
+      if (section_ == kHomomorphism) {
+        // The homomorphism's own stream for ran() and its kin.
+        blocks_.back().homomorphism_seed = seed;
+      } else {
+        // The L-system's productions are chosen at random; the seed matters
+        // only as cpfg's window seeds (cpfg_random_code.cpp).
+        blocks_.back().stochastic = true;
+        blocks_.back().production_seed = seed;
+      }
     } else if (key == "define") {
       define(c);
     } else if (key == "start" || key == "starteach" || key == "endeach" || key == "end") {
-      Scope scope;
-      scope.globals = globals_;
-      scope.arrays = arrays_;
+      Scope scope = new_scope();
       scope.control_block = true;
       c.expect("{", "'{' to begin the block");
-      std::string body = "{ " + cpfg::statements(c, scope) + "}";
+      // Each block in braces of its own: several (one per L-system) run in turn.
+      std::string body = "{ " + cpfg::statements(c, scope) + "} ";
+      globals_.insert(scope.locals.begin(), scope.locals.end());  // unknown names read as 0
       c.accept(";");
       if (!c.done()) c.fail("expected the end of the line after the block");
       ControlStatement::Kind kind = key == "start"       ? ControlStatement::kStart
@@ -320,10 +292,10 @@ class CpfgParser {
   }
 
   void setting(Cursor& c, Pos at, Setting::Kind kind) {
-    Scope scope;
-    scope.globals = globals_;
+    Scope scope = new_scope();
     std::string e = cpfg::expression(c, scope);
     if (!c.done()) c.fail("expected the end of the statement");
+    globals_.insert(scope.locals.begin(), scope.locals.end());  // unknown names read as 0
     model_.items.push_back(Setting{kind, code_at(at, "(" + e + ")"), token_at(at)});
   }
 
@@ -353,6 +325,7 @@ class CpfgParser {
       if (c.accept("=")) {
         c.expect("{", "'{' and the array's values");
         Scope scope;
+        scope.warnings = &model_.warnings;
         text += " = {";
         do text += "(" + cpfg::expression(c, scope) + "),";
         while (c.accept(","));
@@ -370,6 +343,16 @@ class CpfgParser {
 
   // One cpfg symbol: a character, or a multi-character turtle symbol.
   std::string symbol(Cursor& c) {
+    std::string s = joined_symbol(c);
+    // A symbol read split: its first character now, the rest as symbols of their own.
+    if (s.size() > 1 && split_.count(s)) {
+      c.set(c.at() - (s.size() - 1));
+      s.resize(1);
+    }
+    return s;
+  }
+
+  std::string joined_symbol(Cursor& c) {
     c.skip_space();
     const Pos p = c.pos();
     char ch = c.get();
@@ -446,9 +429,7 @@ class CpfgParser {
   // Modules up to the end of the line or a stop token (":" after a successor).
   std::vector<ModuleCall> module_string(Cursor& c, Scope* scope, const char* what) {
     std::vector<ModuleCall> calls;
-    Scope constants;
-    constants.globals = globals_;
-    constants.arrays = arrays_;
+    Scope constants = new_scope();
     Scope& s = scope ? *scope : constants;
     while (!c.done()) {
       if (c.peek() == ':') break;
@@ -494,6 +475,8 @@ class CpfgParser {
       call.at = token_at(p);
       calls.push_back(std::move(call));
     }
+    // Unknown names in the axiom read as 0, as new globals.
+    if (!scope) globals_.insert(constants.locals.begin(), constants.locals.end());
     return calls;
   }
 
@@ -519,6 +502,7 @@ class CpfgParser {
         continue;
       }
       std::string sym = symbol(c);
+      if (sym.size() == 1) lone_pattern_symbols_.insert(sym[0]);
       if (sym == "@L" && c.peek() == '(') c.fail_at(p, "@L(...) in a predecessor is not supported yet");
       std::vector<std::string> formals;
       if (c.peek() == '(') {
@@ -552,17 +536,26 @@ class CpfgParser {
                 : section_ == kDecomposition ? abi::RuleKind::Decomposition
                                              : abi::RuleKind::Interpretation;
     rule.at = token_at(at);
-    Scope scope;
-    scope.globals = globals_;
-    scope.arrays = arrays_;
-    std::vector<PatternModule> first = pattern(c, scope, false);
-    if (c.accept("<")) {
-      rule.parts[abi::kLeft] = std::move(first);
-      first = pattern(c, scope, false);
+    Scope scope = new_scope();
+    // A context written `*` is no context (cpfg reads `*` among symbols as "nothing").
+    if (c.accept("*")) {
+      if (!c.accept("<")) c.fail("expected '<' after '*' (an empty left context)");
+    } else {
+      std::vector<PatternModule> first = pattern(c, scope, false);
+      if (c.accept("<")) rule.parts[abi::kLeft] = std::move(first);
+      else rule.parts[abi::kStrict] = std::move(first);
     }
-    if (first.empty()) c.fail_at(at, "expected a strict predecessor (a production: predecessor --> successor)");
-    rule.parts[abi::kStrict] = std::move(first);
-    if (c.accept(">")) rule.parts[abi::kRight] = pattern(c, scope, true);
+    if (rule.parts[abi::kStrict].empty()) rule.parts[abi::kStrict] = pattern(c, scope, false);
+    if (rule.parts[abi::kStrict].empty())
+      c.fail_at(at, "expected a strict predecessor (a production: predecessor --> successor)");
+    if (c.accept(">")) {
+      if (c.accept("*")) {
+        c.skip_space();
+        if (c.peek() != ':' && !at_arrow(c)) c.fail("expected ':' or '-->' after '*' (an empty right context)");
+      } else {
+        rule.parts[abi::kRight] = pattern(c, scope, true);
+      }
+    }
     if (c.peek() == '<' || c.peek() == '>') c.fail("expected ':' or '-->'");
 
     std::string before, condition = "true", after;
@@ -578,48 +571,38 @@ class CpfgParser {
     c.skip_space();
     if (!c.accept("-->") && !c.accept("->")) c.fail("expected '-->' between the predecessor and the successor");
     std::vector<ModuleCall> successor = module_string(c, &scope, "the successor");
-    double probability = 1.0;
-    bool has_probability = false;
+    // The probability: an expression, evaluated once the predecessor matched.
+    std::string probability = "1.0";
     if (c.accept(":")) {
       c.skip_space();
       const Pos p = c.pos();
-      std::string number;
-      while (std::isdigit(static_cast<unsigned char>(c.peek())) || c.peek() == '.') number += c.get();
-      if (c.peek() == 'e' || c.peek() == 'E') {
-        number += c.get();
-        if (c.peek() == '-' || c.peek() == '+') number += c.get();
-        while (std::isdigit(static_cast<unsigned char>(c.peek()))) number += c.get();
-      }
-      char* end = nullptr;
-      probability = number.empty() ? 0 : std::strtod(number.c_str(), &end);
-      if (number.empty() || *end != '\0' || !c.done())
-        c.fail_at(p, "expected a probability (a number) after the successor's ':'");
-      has_probability = true;
+      probability = cpfg::expression(c, scope);
+      if (!blocks_.back().stochastic)
+        warn(p, "probability ignored: the L-system has no seed:, so its productions are not chosen at random");
+      else if (rule.kind != abi::RuleKind::Production)
+        warn(p, "probability ignored: cpfg applies the first decomposition or homomorphism production that matches");
     }
     if (!c.done()) c.fail("expected the end of the production");
-    if (has_probability && rule.kind != abi::RuleKind::Production)
-      c.fail_at(at, "probabilities in decomposition or homomorphism productions are not supported yet");
 
+    // Stochastic productions (CPFG manual 4.5), as cpfg chooses: the
+    // derivation first probes which productions apply, each evaluating its
+    // probability; the module's draw times their total, less each one's
+    // probability in turn, picks the first to take it to 0 or below.
+    const bool stochastic = rule.kind == abi::RuleKind::Production && blocks_.back().stochastic;
+    const std::string number = std::to_string(rules_.size());
     std::string text;
+    if (stochastic) text += "if (!sylva_cpfg_probing && sylva_cpfg_chosen != " + number + ") return; ";
+    else if (rule.kind == abi::RuleKind::Production) text += "if (sylva_cpfg_probing) return; ";
+    if (rule.kind == abi::RuleKind::Interpretation && !blocks_.back().homomorphism_seed.empty())
+      text += "::sylva::rt::cpfg::StreamSwap sylva_own_stream(sylva_cpfg_random.stream, sylva_cpfg_homomorphism_stream[" +
+              std::to_string(blocks_.size() - 1) + "]); ";
+    if (rule.kind == abi::RuleKind::Interpretation) blocks_.back().homomorphism_rules = true;
     for (const std::string& local : scope.locals) text += "double " + cpfg::variable(local) + " = 0; ";
     text += before;
     if (condition != "true") text += "if (!(" + condition + ")) return; ";
-    if (rule.kind == abi::RuleKind::Production && blocks_.back().stochastic) {
-      // The module's draw (uniform in [0,1)) times the total probability of
-      // its productions in this L-system, less each production's share in
-      // turn: the first to take it to 0 or below applies.
-      const std::string& strict = rule.parts[abi::kStrict].front().name;
-      const auto key = std::make_pair(blocks_.size() - 1, strict);
-      auto slot = total_slot_.find(key);
-      if (slot == total_slot_.end()) {
-        slot = total_slot_.emplace(key, total_probability_.size()).first;
-        total_probability_.push_back(0);
-      }
-      total_probability_[slot->second] += probability;
-      text += "if (!sylva_cpfg_drawn) { sylva_cpfg_r = sylva_cpfg_total[" + std::to_string(slot->second) +
-              "] * sylva_cpfg_u; sylva_cpfg_drawn = true; } ";
-      text += "sylva_cpfg_r -= " + std::to_string(probability) + "; if (sylva_cpfg_r > 0) return; ";
-    }
+    if (stochastic)
+      text += "if (sylva_cpfg_probing) { sylva_cpfg_applies(" + number + ", static_cast<float>(" + probability +
+              ")); return; } ";
     text += after;
     if (!text.empty()) rule.body.push_back(BodyPart{BodyPart::kCode, code_at(at, text), {}, token_at(at)});
     rule.body.push_back(BodyPart{BodyPart::kProduce, {}, std::move(successor), token_at(at)});
@@ -629,20 +612,20 @@ class CpfgParser {
   }
 
   void finish() {
-    // ignore: / consider: name symbols; each stands for all its module types.
-    // Each L-system has its own.
+    // ignore: / consider: name characters. A module type is named when
+    // every character of its symbol is (@o by @ and o). Each L-system has its own.
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
       const Block& block = blocks_[b];
-      if (block.filter_symbols.empty()) continue;
+      if (block.filter_chars.empty()) continue;
       ContextFilter filter;
       filter.consider = block.filter_consider;
       filter.at = block.filter_at;
-      for (const std::string& sym : block.filter_symbols) {
-        if (sym == "[" || sym == "]" || sym == "%") {
-          filter.names.push_back(sym == "[" ? "SB" : sym == "]" ? "EB" : "Cut");
-          continue;
-        }
-        for (const std::string& name : by_symbol_[sym]) filter.names.push_back(name);
+      if (block.filter_chars.count('[')) filter.names.push_back("SB");
+      if (block.filter_chars.count(']')) filter.names.push_back("EB");
+      if (block.filter_chars.count('%')) filter.names.push_back("Cut");
+      for (const auto& [sym, names] : by_symbol_) {
+        const bool named = std::all_of(sym.begin(), sym.end(), [&](char ch) { return block.filter_chars.count(ch) > 0; });
+        if (named) filter.names.insert(filter.names.end(), names.begin(), names.end());
       }
       const int index = static_cast<int>(model_.filters.size());
       model_.filters.push_back(filter);
@@ -670,20 +653,7 @@ class CpfgParser {
       for (std::size_t r = 0; r < rules_.size(); ++r)
         std::get<Rule>(model_.items[rules_[r]]).group = blocks_[rule_blocks_[r]].label;
     }
-    // Control statements, with the seed first (cpfg: seed48({seed, 0, 155})).
-    if (has_seed_) {
-      const std::uint64_t state = (155ULL << 32) | (static_cast<std::uint64_t>(seed_) & 0xFFFF);
-      control_[ControlStatement::kStart] =
-          "{ ::sylva::rt::control.rand48 = " + std::to_string(state) + "ULL; }" + control_[ControlStatement::kStart];
-      if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = lines_.front().pos.front();
-      std::string table = "namespace { [[maybe_unused]] const double sylva_cpfg_total[] = {";
-      for (double total : total_probability_) table += std::to_string(total) + ",";
-      table += "0}; double sylva_cpfg_u = 0; bool sylva_cpfg_drawn = false; "
-               "void sylva_cpfg_before_module(::sylva::abi::ModuleId) { sylva_cpfg_u = ::sylva::rt::next_rand48(); "
-               "sylva_cpfg_drawn = false; } }\n";
-      model_.items.insert(model_.items.begin() + 1, Code{verbatim(lines_.front().pos.front(), table)});
-      model_.cpfg_stochastic = true;
-    }
+    random_streams();
     // Globals, declared before everything that uses them.
     std::string globals = "namespace {\n";
     for (const std::string& g : globals_) globals += "[[maybe_unused]] double " + cpfg::variable(g) + " = 0;\n";
@@ -693,30 +663,61 @@ class CpfgParser {
       ControlStatement statement;
       statement.kind = static_cast<ControlStatement::Kind>(kind);
       statement.at = token_at(control_at_[kind]);
-      statement.body.push_back(BodyPart{BodyPart::kCode, code_at(control_at_[kind], body), {}, statement.at});
+      statement.body.push_back(BodyPart{BodyPart::kCode, code_at(control_at_[kind], "{ " + body + "}"), {}, statement.at});
       model_.items.push_back(std::move(statement));
     }
+  }
+
+  // The random streams' code, and their start in the Start statement.
+  void random_streams() {
+    const Pos first = lines_.front().pos.front();
+    std::vector<cpfg::LsystemRandomness> lsystems;
+    for (const Block& b : blocks_) lsystems.push_back(cpfg::LsystemRandomness{b.label, b.stochastic, b.production_seed, b.homomorphism_seed});
+    const cpfg::RandomCode code = cpfg::random_code(lsystems, rules_.size());
+    model_.items.insert(model_.items.begin() + 1, Code{verbatim(first, code.declarations)});
+    model_.cpfg_stochastic = code.chooses;
+    control_[ControlStatement::kStart] = code.start + control_[ControlStatement::kStart];
+    if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = first;
+    if (!code.restarts_streams) return;
+    // The engine asks for the interpretation depth once at the start of
+    // every interpretation pass: the homomorphisms' streams restart there.
+    bool has_depth = false;
+    for (Item& item : model_.items) {
+      Setting* setting = std::get_if<Setting>(&item);
+      if (!setting || setting->kind != Setting::kInterpretationDepth) continue;
+      setting->expression.front().text = "(sylva_cpfg_restart_streams(), " + setting->expression.front().text + ")";
+      has_depth = true;
+    }
+    if (!has_depth)
+      model_.items.push_back(
+          Setting{Setting::kInterpretationDepth, code_at(first, "(sylva_cpfg_restart_streams(), 1)"), token_at(first)});
+  }
+
+  void warn(Pos p, const std::string& text) {
+    model_.warnings.push_back(model_.files[static_cast<std::size_t>(p.file)] + ":" + std::to_string(p.line) + ":" +
+                              std::to_string(p.column) + ": warning: " + text);
   }
 
   enum Section { kProductions, kDecomposition, kHomomorphism };
 
   Model model_;
   std::vector<Line> lines_;
+  std::set<std::string> split_;          // symbols read a character a module
+  std::set<char> lone_pattern_symbols_;  // one-character symbols in predecessors and contexts
   std::map<std::string, std::size_t> module_index_;
   std::map<std::string, std::vector<std::string>> by_symbol_;
-  // The total probability of a module's productions in an L-system (block
-  // index, module name), at the slot total_slot_ gives it.
-  std::map<std::pair<std::size_t, std::string>, std::size_t> total_slot_;
-  std::vector<double> total_probability_;
   std::set<std::string> globals_, arrays_;
   // One per Lsystem: ... endlsystem; the first is the main L-system.
   struct Block {
     int label = 0;
-    std::vector<std::string> filter_symbols;
+    std::set<char> filter_chars;
     bool filter_consider = false;
     Token filter_at;
     // A seed: statement makes the L-system's productions stochastic.
     bool stochastic = false;
+    std::string homomorphism_seed;  // C++ of the homomorphism's seed:; empty without one
+    std::string production_seed;    // C++ of the L-system's seed:; empty without one
+    bool homomorphism_rules = false;
   };
   std::vector<Block> blocks_;
   std::vector<std::pair<double, Pos>> calls_;  // ?(label,s) with a constant label
@@ -725,14 +726,21 @@ class CpfgParser {
   std::map<int, std::string> control_;
   std::map<int, Pos> control_at_;
   Section section_ = kProductions;
-  bool seen_lsystem_ = false, seen_end_ = false, seen_axiom_ = false, has_seed_ = false;
-  long seed_ = 0;
+  bool seen_lsystem_ = false, seen_end_ = false, seen_axiom_ = false;
 };
 
 }  // namespace
 
 Model parse_cpfg(const std::string& preprocessed, const std::string& main_file) {
-  return CpfgParser(preprocessed, main_file).parse();
+  // cpfg's string is one module a character; the turtle reads @o, ?P and
+  // their kin from the characters that follow @, ? or ~. Sylva keeps such a
+  // symbol as one module, unless a production names one of its characters on
+  // its own: then the model is read again with those symbols split.
+  CpfgParser joined(preprocessed, main_file);
+  Model model = joined.parse();
+  std::set<std::string> split = joined.symbols_to_split();
+  if (split.empty()) return model;
+  return CpfgParser(preprocessed, main_file, std::move(split)).parse();
 }
 
 }  // namespace sylva::lang

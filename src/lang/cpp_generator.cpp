@@ -319,13 +319,30 @@ class CppGenerator {
                      "); unsigned char* sylva_at = sylva_o->data + sylva_o->size;");
     for (const ModuleCall& call : calls) {
       const ModuleDecl& decl = module(call.name);
+      // cpfg evaluates a module's parameters left to right (ran(1) before the
+      // next ran(1)); the elements of a braced list are evaluated in order,
+      // a function's arguments are not.
+      std::size_t in_order = 0;
+      if (model_.cpfg)
+        while (in_order < call.args.size() && decl.param_types[in_order] == "float") ++in_order;
+      if (in_order > 1) {
+        out_.at(call.at, "{ const float sylva_v[] = {");
+        for (std::size_t k = 0; k < in_order; ++k) {
+          if (k) out_.inline_text(",");
+          out_.tokens(call.args[k]);
+        }
+        out_.inline_text("};");
+      } else {
+        in_order = 0;
+      }
       out_.at(call.at, "::sylva::rt::put_module<" + join_types(decl.param_types) + ">(sylva_at, " +
                            std::to_string(module_id_.at(call.name)));
-      for (const Code& arg : call.args) {
+      for (std::size_t k = 0; k < call.args.size(); ++k) {
         out_.inline_text(",");
-        out_.tokens(arg);
+        if (k < in_order) out_.inline_text("sylva_v[" + std::to_string(k) + "]");
+        else out_.tokens(call.args[k]);
       }
-      out_.inline_text(");");
+      out_.inline_text(in_order > 0 ? "); }" : ");");
     }
     out_.inline_text("sylva_o->size = static_cast<::std::size_t>(sylva_at - sylva_o->data);");
   }
@@ -434,6 +451,7 @@ class CppGenerator {
     t += "    " + fn(control_[0]) + ", " + fn(control_[1]) + ", " + fn(control_[2]) + ", " + fn(control_[3]) + ",\n";
     std::string flags = model_.cpfg ? "::sylva::abi::kModelCpfg" : "0";
     if (model_.cpfg_sub_lsystems) flags += " | ::sylva::abi::kModelSubLsystems";
+    if (model_.cpfg_stochastic) flags += " | ::sylva::abi::kModelProbeProductions";
     t += "    " + flags + ", " + (model_.cpfg_stochastic ? "&sylva_cpfg_before_module" : "nullptr") + ",\n";
     auto id_or_none = [&](const std::string& name) {
       return name.empty() ? std::string("::sylva::abi::kNoModule") : std::to_string(module_id_.at(name));

@@ -127,6 +127,9 @@ struct Model {
   std::vector<int> gillespie_groups;
   // The numbers of every group the model defines (group N: and ggroup N:).
   std::vector<int> groups;
+  // What the reference program reads past with a warning, as
+  // "file:line:column: warning: text", for the user to see.
+  std::vector<std::string> warnings;
 };
 
 // The predefined modules of lpfgall.h, in id order.

@@ -54,7 +54,11 @@ std::vector<std::string> marker_files(const std::string& text) {
 
 Translation translate_cpfg(const std::string& model_path, const TranslatorOptions& options) {
   // cpfg models go through the C preprocessor (#define, #include) on their own.
-  std::vector<std::string> argv = {options.compiler, "-E", "-x", "c", "-D__SYLVA__=1", "-D__CPFG__=1"};
+  // cpfg's preprocessor (vlabcpp) passes a line whose `#` starts no directive
+  // through as text (`#` is also a turtle symbol: `	#(0.1) F`), as does the
+  // C preprocessor in its assembler mode; in C mode it is an error.
+  std::vector<std::string> argv = {options.compiler, "-E", "-x", "assembler-with-cpp", "-D__SYLVA__=1",
+                                   "-D__CPFG__=1"};
   for (const std::string& d : options.defines) argv.push_back("-D" + d);
   std::string dir = fs::path(model_path).parent_path().string();
   argv.push_back("-I");
@@ -66,13 +70,15 @@ Translation translate_cpfg(const std::string& model_path, const TranslatorOption
 
   // The generated C++ needs the runtime: lpfgall.h, preprocessed in front of it.
   std::vector<std::string> rt = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1",
-                                 "-isystem", options.runtime_include_dir, "-include", "lpfgall.h", "/dev/null"};
+                                 "-isystem", options.runtime_include_dir, "-include", "lpfgall.h",
+                                 "-include", "sylva/runtime/cpfg_random.h", "/dev/null"};
   ProcessResult runtime = run_process(rt);
   if (runtime.exit_code != 0) preprocessor_failed(model_path, runtime);
 
   Translation result;
   result.cpp = runtime.out + "\n" + generate_cpp(model);
   result.dependencies = marker_files(pre.out);
+  result.warnings = model.warnings;
   for (const std::string& f : marker_files(runtime.out))
     if (f != "/dev/null") result.dependencies.push_back(f);
   return result;

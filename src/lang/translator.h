@@ -23,6 +23,7 @@ bool looks_like_cpfg(const std::string& source);
 struct Translation {
   std::string cpp;                          // preprocessed C++ (compile as .ii)
   std::vector<std::string> dependencies;    // every file the preprocessor read
+  std::vector<std::string> warnings;        // "file:line:column: warning: ..."
 };
 
 // Throws ModelError for a missing file, a preprocessor error or an L+C error.

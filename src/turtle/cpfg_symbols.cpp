@@ -13,15 +13,17 @@
 
 namespace sylva::turtle {
 
-CpfgOp cpfg_op(const std::string& symbol) {
+namespace {
+
+const std::unordered_map<std::string_view, CpfgOp>& command_table() {
   using O = CpfgOp;
   static const std::unordered_map<std::string_view, CpfgOp> table = {
       {"F", O::Forward}, {"f", O::Move}, {"G", O::ForwardNoVertex}, {"g", O::MoveNoVertex},
       {"@M", O::MoveTo},
       {"+", O::Left}, {"-", O::Right}, {"&", O::Down}, {"^", O::Up}, {"\\", O::RollLeft}, {"/", O::RollRight},
       {"|", O::TurnAround},
-      // $ ends a sub-L-system's ?(label,s); elsewhere it is ABOP's roll to vertical.
-      {"@v", O::RollToVertical}, {"$", O::ReturnOrRollToVertical}, {"?", O::SubLsystemCall},
+      // $ ends a sub-L-system's ?(label,s), and does nothing else.
+      {"@v", O::RollToVertical}, {"$", O::SubLsystemReturn}, {"?", O::SubLsystemCall},
       {"@R", O::SetHeading},
       {"#", O::WidthUp}, {"!", O::WidthDown},
       {";", O::ColorUp}, {",", O::ColorDown},
@@ -41,10 +43,23 @@ CpfgOp cpfg_op(const std::string& symbol) {
       {"@L", O::Label}, {"@Tp", O::MinimizeTwist}, {"@Tf", O::ForceTwist},
       {"@;", O::BackColorUp}, {"@,", O::BackColorDown},
   };
-  auto it = table.find(symbol);
-  if (it != table.end()) return it->second;
-  if (symbol.size() == 2 && symbol[0] == '~') return O::PredefinedSurface;  // ~id (CPFG manual 6.7.1)
-  return O::None;
+  return table;
+}
+
+}  // namespace
+
+CpfgOp cpfg_op(const std::string& symbol) {
+  auto it = command_table().find(symbol);
+  if (it != command_table().end()) return it->second;
+  if (symbol.size() == 2 && symbol[0] == '~') return CpfgOp::PredefinedSurface;  // ~id (CPFG manual 6.7.1)
+  return CpfgOp::None;
+}
+
+bool cpfg_command_prefix(const std::string& start) {
+  if (start == "~") return true;
+  for (const auto& [symbol, op] : command_table())
+    if (symbol.size() > start.size() && symbol.compare(0, start.size(), start) == 0) return true;
+  return false;
 }
 
 CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::None), params_(types.size(), 0) {
@@ -64,6 +79,17 @@ CpfgSymbols::CpfgSymbols(const ModuleTypes& types) : ops_(types.size(), CpfgOp::
       else size -= sizeof(const char*);
     }
     params_[id] = static_cast<std::uint8_t>(std::min<std::uint32_t>(size / 4, 255));
+    const std::string& name = types.name(m);
+    if (size == 0 && (name == "@" || name == "?" || name == "~")) ops_[id] = CpfgOp::Prefix;
+  }
+  // Queries read split: ? then P(x,y,z) (P H L U with two or three parameters).
+  bool split_query = false;
+  for (std::size_t id = rt::mid::PredefinedCount; id < types.size(); ++id)
+    split_query = split_query || (ops_[id] == CpfgOp::Prefix && types.name(static_cast<ModuleId>(id)) == "?");
+  for (std::size_t id = rt::mid::PredefinedCount; split_query && id < types.size(); ++id) {
+    const std::string& name = types.name(static_cast<ModuleId>(id));
+    if ((name == "P" || name == "H" || name == "L" || name == "U") && params_[id] >= 2)
+      split_queries_.push_back(static_cast<ModuleId>(id));
   }
 }
 
@@ -144,7 +170,7 @@ std::string format_cpfg_label(std::string_view format, const float* values, int 
 }
 
 std::vector<ModuleId> CpfgSymbols::query_modules() const {
-  std::vector<ModuleId> ids;
+  std::vector<ModuleId> ids = split_queries_;
   for (std::size_t id = 0; id < ops_.size(); ++id)
     if (is_query(ops_[id])) ids.push_back(static_cast<ModuleId>(id));
   return ids;
@@ -201,7 +227,26 @@ void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 
 
 void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uint32_t source_index, bool in_string) {
   using O = CpfgOp;
-  const CpfgOp op = cpfg_->op(id);
+  CpfgOp op = cpfg_->op(id);
+  // A command read a character a module: the characters so far and this one.
+  // Where they make no command, cpfg reads this module on its own.
+  if (!cpfg_pending_.empty()) {
+    const std::string joined = cpfg_pending_ + types_.name(id);
+    const CpfgOp whole = cpfg_op(joined);
+    if (whole != O::None && whole != O::Label) {  // @L is never read split: its text is @L's own
+      op = whole;
+      cpfg_pending_.clear();
+    } else if (cpfg_command_prefix(joined)) {
+      cpfg_pending_ = joined;
+      return;
+    } else {
+      cpfg_pending_.clear();
+    }
+  }
+  if (op == O::Prefix) {
+    cpfg_pending_ = types_.name(id);
+    return;
+  }
   if (op == O::None) return;  // cpfg ignores symbols that are not the turtle's
   const int n = cpfg_->params(id);
   from_ = Provenance{source_index, id};
@@ -229,7 +274,6 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     }
   }
   Frame& frame = state_.frame;
-  const bool corrected = settings_.corrected_rotation;
   // Computed only by the symbols that use them (this runs for every module).
   // A rotation symbol's angle: its parameter, or the view file's increment.
   auto angle = [&] { return n > 0 ? param(p, 0) : settings_.angle_increment; };
@@ -240,7 +284,8 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
   // A generalized cylinder's strips (@Gc, .(strips), @Ge): its parameter or 1.
   auto strips = [&] { return n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1; };
   switch (op) {
-    case O::None: break;
+    case O::None:
+    case O::Prefix: break;
     case O::Push: push(); break;
     case O::Pop: pop(); break;
 
@@ -258,29 +303,34 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       break;
     }
 
-    // The lpfg modules these are the cpfg equivalents of (LPFG manual 5.2):
-    // + Left, - Right, & Down, ^ Up, \ RollL, / RollR.
+    // cpfg's turtle (interpret.c) starts with H = +y, L = -x and U = -z: its
+    // frame is left-handed (U = L x H). The frame here is lpfg's, with U =
+    // H x L, so cpfg's U is -frame.up throughout. Turns and pitches come out
+    // as lpfg's corrected + - & ^ do; cpfg's / rolls L towards its U, the
+    // other way from lpfg's corrected /. lpfg's "corrected rotation" does
+    // not apply: cpfg has no such setting.
     case O::Left: turn(angle(), 0); break;
     case O::Right: turn(-angle(), 0); break;
-    case O::Down: turn(corrected ? angle() : -angle(), 1); break;
-    case O::Up: turn(corrected ? -angle() : angle(), 1); break;
-    case O::RollLeft: turn(corrected ? -angle() : angle(), 2); break;
-    case O::RollRight: turn(corrected ? angle() : -angle(), 2); break;
+    case O::Down: turn(angle(), 1); break;
+    case O::Up: turn(-angle(), 1); break;
+    case O::RollLeft: turn(angle(), 2); break;
+    case O::RollRight: turn(-angle(), 2); break;
     case O::TurnAround: frame.rotate_up(-1, 0); break;
-    case O::ReturnOrRollToVertical:
+    case O::SubLsystemReturn:
+      // The end of a sub-L-system: the caller's scale again. cpfg's $ does
+      // nothing else (interpret.c): it never rolls the turtle.
       if (n == 0 && !sub_lsystem_scales_.empty()) {
-        // The end of a sub-L-system: the caller's scale again.
         state_.scale = sub_lsystem_scales_.back();
         sub_lsystem_scales_.pop_back();
-        break;
       }
-      [[fallthrough]];
+      break;
     case O::RollToVertical:
       if (!frame.roll_to_vertical(kVertical, kEpsilon)) note(" ignored: heading vertical");
       break;
     case O::SetHeading:
       if (n >= 6) {
-        if (!frame.set_head_up(vec_param(p, 0), vec_param(p, 3), kEpsilon)) note(" ignored: degenerate vectors");
+        // The up vector given is cpfg's U, -frame.up.
+        if (!frame.set_head_up(vec_param(p, 0), -vec_param(p, 3), kEpsilon)) note(" ignored: degenerate vectors");
       } else if (n >= 3) {
         if (!frame.set_heading(vec_param(p, 0), kEpsilon)) note(" ignored: no heading");
       } else {
@@ -422,7 +472,7 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     case O::QueryPosition: query_cpfg(p, n, state_.position, in_string); break;
     case O::QueryHeading: query_cpfg(p, n, frame.heading, in_string); break;
     case O::QueryLeft: query_cpfg(p, n, frame.left, in_string); break;
-    case O::QueryUp: query_cpfg(p, n, frame.up, in_string); break;
+    case O::QueryUp: query_cpfg(p, n, -frame.up, in_string); break;  // cpfg's U
 
     // ?(label,s): the sub-L-system's structure is scaled by s (CPFG manual
     // 7.2) until its $.
@@ -464,21 +514,28 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
     // @Tp: up and left carried from the last step's to the current heading
     // by the smallest rotation between the two headings (parallel
     // transport), which undoes the twist (/ \) since that step.
+    // @Tp (cpfg's adjust_up_and_left): the up vector of the last F or G,
+    // carried by the rotation from that step's heading to this one. Where
+    // the heading has not turned (or turned right round), nothing changes.
     case O::MinimizeTwist: {
       const Vec3 from = state_.step_heading, to = frame.heading;
       const Vec3 axis = cross(from, to);
       const float s = length(axis), c = dot(from, to);
-      Vec3 up = state_.step_up;
-      if (s > 1e-6f) up = rotated(up, axis / s, c, s);
-      else if (c < 0) note(" (heading reversed: the last step's up kept)");
+      if (s <= 1e-6f) {
+        note(" (the heading has not turned since the last step)");
+        break;
+      }
+      Vec3 up = rotated(state_.step_up, axis / s, c, s);
       // Exactly across the heading (it may have drifted from it).
       up = up - to * dot(up, to);
       if (length(up) < kEpsilon || !frame.set_head_up(to, up, kEpsilon)) note(" ignored: up along the heading");
       break;
     }
-    // @Tf: this turtle's tropisms bend the heading by the smallest rotation,
-    // which keeps the twist of / and \ already; there is nothing to force.
-    case O::ForceTwist: note(" (twist is always kept)"); break;
+    // @Tf: the twist so far is wanted; @Tp starts from here.
+    case O::ForceTwist:
+      state_.step_heading = frame.heading;
+      state_.step_up = frame.up;
+      break;
 
     // @;(n) @,(n): the back side's colour index, stepped from the front's
     // until set. Outputs draw one side: the Scene keeps the front's colour.

@@ -39,15 +39,20 @@ enum class CpfgOp : std::uint8_t {
   ElasticitySet, ElasticityUp, ElasticityDown,                          // @Ts @T @Td
   QueryPosition, QueryHeading, QueryLeft, QueryUp,                      // ?P ?H ?L ?U
   SubLsystemCall,                                                       // ?(label,s)
-  ReturnOrRollToVertical,                                               // $
+  SubLsystemReturn,                                               // $
   PredefinedSurface,                                                    // ~id
   Label,                                                                // @L("format",p1,...)
   MinimizeTwist, ForceTwist,                                            // @Tp @Tf
   BackColorUp, BackColorDown,                                           // @; @,
+  // @, ? or ~ alone: the start of a command whose other characters are the
+  // modules that follow (cpfg's string holds a module a character).
+  Prefix,
 };
 
 // The operation of a symbol, by its name (the symbol as written).
 CpfgOp cpfg_op(const std::string& symbol);
+// Whether `start` begins a longer command (@G of @Gc, @ of @O).
+bool cpfg_command_prefix(const std::string& start);
 
 // @L's text: `format` printf-style with the `count` values. Only %f %F %e %E
 // %g %G %a %A (the value) and %d %i %o %u %x %X (its integer part) with
@@ -67,11 +72,13 @@ class CpfgSymbols {
   CpfgOp op(ModuleId id) const { return id < ops_.size() ? ops_[id] : CpfgOp::None; }
   // Number of float parameters of a module of this type (@L's after its string).
   int params(ModuleId id) const { return id < params_.size() ? params_[id] : 0; }
-  // The module ids of ?P ?H ?L ?U, for the derivation's query pass.
+  // The module ids of ?P ?H ?L ?U, for the derivation's query pass; with
+  // queries read split (? P(x,y,z)), those of P, H, L and U.
   std::vector<ModuleId> query_modules() const;
 
  private:
   std::vector<CpfgOp> ops_;
+  std::vector<ModuleId> split_queries_;
   std::vector<std::uint8_t> params_;
 };
 

@@ -96,8 +96,11 @@ void TurtleInterpreter::Impl::forward(float distance, bool draw, bool polygon_ve
   const Vec3 start = state_.position;
   const Vec3 end = start + state_.frame.heading * distance;
   state_.position = end;
-  state_.step_heading = state_.frame.heading;
-  state_.step_up = state_.frame.up;
+  // The frame of the last drawn step, for cpfg's @Tp (F and G set it, f and g do not).
+  if (draw) {
+    state_.step_heading = state_.frame.heading;
+    state_.step_up = state_.frame.up;
+  }
   // Inside a generalized cylinder the cylinder is the drawing.
   if (draw && distance != 0 && !cylinder_open(state_)) add_segment(start, end);
   if (trace_) {

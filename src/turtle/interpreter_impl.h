@@ -114,6 +114,8 @@ struct TurtleInterpreter::Impl {
   const ModuleTypes& types_;
   // A cpfg model's symbol table (the settings' own, or built here); null for L+C.
   std::shared_ptr<const CpfgSymbols> cpfg_;
+  // A cpfg command read a character a module (@ G c(3)): the characters so far.
+  std::string cpfg_pending_;
   Scene* scene_;
   std::string* trace_;
 

@@ -87,8 +87,11 @@ TEST_P(CpfgGolden, MatchesCpfg) {
   const std::string expected = without_final_newline(read_text(
       (folder / ((c.homomorphism ? "expected-homo-step" : "expected-step") + std::to_string(c.steps) + ".txt")).string()));
   ASSERT_FALSE(expected.empty());
-  build::BuildOptions options;
-  options.cache_dir = SYLVA_TEST_CACHE_DIR;
+  SimulationOptions options;
+  options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  // These strings follow cpfg's window in seeding drand48 from seed:
+  // (CPFG-INDEX.md); its batch runs do not.
+  options.cpfg_window_seeding = true;
   Simulation simulation((folder / "lsystem.l").string(), options);
   simulation.derivation().run(c.steps);
   const std::string actual = without_final_newline(
@@ -169,15 +172,8 @@ TEST(CpfgErrors, no_symbol_where_a_module_is_expected) {
   EXPECT_NE(err2.find("bad.l:3:1: error: expected a symbol"), std::string::npos) << err2;
 }
 
-TEST(CpfgErrors, unknown_variable) {
-  const std::string err = error_of("Lsystem: 1\nAxiom: A(1)\nA(x) --> A(y+1)\nendlsystem\n");
-  EXPECT_NE(err.find("bad.l:3:12: error: unknown variable 'y'"), std::string::npos) << err;
-}
-
-TEST(CpfgErrors, probability_must_be_a_number) {
-  const std::string err = error_of("Lsystem: 1\nseed: 2\nAxiom: A\nA --> AB : often\nendlsystem\n");
-  EXPECT_NE(err.find("bad.l:4:12: error: expected a probability (a number)"), std::string::npos) << err;
-}
+// An unknown name and a probability that is a name are not errors in cpfg
+// (it warns and reads 0): see cpfg_dialect_test.cpp.
 
 TEST(CpfgErrors, sub_lsystem_errors) {
   const std::string err = error_of("Lsystem: 1\nAxiom: A(1)\nA(t) --> ?(2,1)B(t-1)$\nendlsystem\n");

@@ -1,11 +1,12 @@
 // Stochastic productions in cpfg models with sub-L-systems (CPFG manual 4.5,
-// 7.2). All L-systems draw from one random stream, seeded by the main
-// L-system's seed: as cpfg seeds drand48 (seed48({seed, 0, 155})); every
-// module of the string takes one draw u in string order, and a module is
-// rewritten by the first of its own L-system's productions whose cumulative
-// probability reaches u times the total of that L-system's productions for
-// it. The expected strings are worked out here with the C library's erand48
-// on the same seed.
+// 7.2). All L-systems draw from one random stream, drand48, which cpfg in
+// batch never seeds: it starts from the C library's zero state whatever
+// seed: says. Every module of a stochastic L-system takes one draw u in
+// string order, and a module is rewritten by the first of its own
+// L-system's productions whose cumulative probability reaches u times the
+// total of that L-system's productions for it. The expected strings are
+// worked out here with the C library's erand48 from the zero state, and
+// the last is the reference cpfg's.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -39,9 +40,9 @@ const char* const kModel =
     "B --> YB : 70\n"
     "endlsystem\n";
 
-// The string after `steps` steps, derived by hand with erand48.
-std::string expected_after(int steps) {
-  unsigned short state[3] = {1, 0, 155};
+// The string after `steps` steps, derived by hand with erand48 from
+// `state` (cpfg's batch runs: drand48's zero state).
+std::string expected_after(int steps, unsigned short state[3]) {
   std::vector<std::string> modules = {"B", "?(2,1)", "B", "$"};
   for (int step = 0; step < steps; ++step) {
     std::vector<std::string> next;
@@ -69,6 +70,11 @@ std::string expected_after(int steps) {
   return text;
 }
 
+std::string expected_after(int steps) {
+  unsigned short zero[3] = {0, 0, 0};
+  return expected_after(steps, zero);
+}
+
 TEST(CpfgSubLsystemSeed, OneStreamAcrossLsystemsWithEachLsystemsTotals) {
   const std::string dir = make_temp_dir("cpfg-sub-seed");
   std::ofstream(dir + "/lsystem.l") << kModel;
@@ -82,10 +88,40 @@ TEST(CpfgSubLsystemSeed, OneStreamAcrossLsystemsWithEachLsystemsTotals) {
     if (!text.empty() && text.back() == '\n') text.pop_back();
     EXPECT_EQ(text, expected_after(steps)) << "after " << steps << " steps";
   }
-  // Both L-systems chose both ways somewhere in six steps (so the test
-  // would notice a swapped total).
-  const std::string last = expected_after(6);
-  for (char c : std::string("PQRXY")) EXPECT_NE(last.find(c), std::string::npos) << c;
+  // The reference cpfg (cpfg -g -str) gives this string after six steps.
+  EXPECT_EQ(expected_after(6), "PPRRRRB?(2,1)XYYYYYB$");
+}
+
+// As cpfg's window seeds drand48: seed48({seed, 0, 155}) from the main
+// L-system's seed: 1.
+TEST(CpfgSubLsystemSeed, WindowSeedingStartsFromTheSeed) {
+  const std::string dir = make_temp_dir("cpfg-sub-window-seed");
+  std::ofstream(dir + "/lsystem.l") << kModel;
+  SimulationOptions options;
+  options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  options.cpfg_window_seeding = true;
+  Simulation simulation(dir + "/lsystem.l", options);
+  simulation.derivation().run(6);
+  std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  unsigned short seeded[3] = {1, 0, 155};
+  EXPECT_EQ(text, expected_after(6, seeded));
+  EXPECT_NE(text, expected_after(6));
+}
+
+TEST(CpfgSubLsystemSeed, ModulesOfADeterministicLsystemDoNotDraw) {
+  // L-system 2 has no seed: its productions are not chosen at random (their
+  // probabilities are read past with a warning) and its modules take no
+  // draw, so the main L-system's B after the call draws next. The string is
+  // the reference cpfg's.
+  const std::string dir = make_temp_dir("cpfg-sub-deterministic");
+  std::ofstream(dir + "/lsystem.l") << "Lsystem: 1\nseed: 1\nderivation length: 6\nAxiom: B?(2,1)B$B\n"
+                                       "B --> PB : 1\nB --> QB : 1\nB --> RB : 2\nendlsystem\n"
+                                       "Lsystem: 2\nAxiom: B\nB --> XB : 30\nB --> YB : 70\nendlsystem\n";
+  ProcessResult r = run_sylva({"run", "lsystem.l"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "PQPQPRB?(2,1)XXXXXXB$PQRRPQB\n");
+  EXPECT_NE(r.err.find("lsystem.l:11:12: warning: probability ignored"), std::string::npos) << r.err;
 }
 
 }  // namespace

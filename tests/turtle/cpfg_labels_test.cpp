@@ -139,35 +139,39 @@ TEST(CpfgRandom, BranIsSeededBySrandLikeRan) {
 
 // ---- @Tp, @Tf -----------------------------------------------------------------
 
+// The positions and up vectors below are the reference cpfg's (?P and ?U
+// after each F; a segment's up is the frame's, cpfg's U negated).
 TEST(CpfgTwist, MinimizeTwistUndoesTheRollSinceTheLastStep) {
-  // H=(0,1,0) L=(-1,0,0) U=(0,0,1). /(90) rolls: L=(0,0,1), U=(1,0,0);
-  // &(90) pitches toward -U: H=(-1,0,0), U=(0,1,0), L=(0,0,1).
-  // @Tp carries the last step's up (0,0,1) from H=(0,1,0) to H=(-1,0,0) by
-  // the 90-degree turn about z: U stays (0,0,1), so L = U x H = (0,-1,0),
-  // and + then heads along -y. Without @Tp, + heads along L = +z.
+  // /(90)&(90) turns H to +x with U (cpfg's) at -y; @Tp carries the last F's
+  // U (-z) round with the heading instead: cpfg ?U(0,0,-1), and + heads along +y.
   CpfgModel with = cpfg_lsystem("twist-tp", "Axiom: F/(90)&(90)@Tp F+(90)F");
   ASSERT_EQ(with.scene.segments.size(), 3u);
-  expect_near(with.scene.segments[1].end, {-1, 1, 0});
+  expect_near(with.scene.segments[1].end, {1, 1, 0});
   expect_near(with.scene.segments[1].up, {0, 0, 1});
-  expect_near(with.scene.segments[2].end, {-1, 0, 0});
+  expect_near(with.scene.segments[2].end, {1, 2, 0});
   CpfgModel without = cpfg_lsystem("twist-no-tp", "Axiom: F/(90)&(90)F+(90)F");
   ASSERT_EQ(without.scene.segments.size(), 3u);
   expect_near(without.scene.segments[1].up, {0, 1, 0});
-  expect_near(without.scene.segments[2].end, {-1, 1, 1});
+  expect_near(without.scene.segments[2].end, {1, 1, -1});
 }
 
-TEST(CpfgTwist, MinimizeTwistKeepsAPureTurnAndForceTwistChangesNothing) {
-  // A roll with no step since: @Tp undoes it. A pitch alone has no twist to undo.
+TEST(CpfgTwist, MinimizeTwistKeepsAPureRollAndForceTwistKeepsTheTwist) {
+  // A roll with no turn of the heading since the last F: @Tp leaves it (?P(-0.866025,1,-0.5)).
   CpfgModel roll = cpfg_lsystem("twist-roll", "Axiom: F/(30)@Tp+(90)F");
   ASSERT_EQ(roll.scene.segments.size(), 2u);
-  expect_near(roll.scene.segments[1].end, {-1, 1, 0});
+  expect_near(roll.scene.segments[1].end, {-0.866025f, 1, -0.5f});
   CpfgModel pitch = cpfg_lsystem("twist-pitch", "Axiom: F&(90)@Tp F");
   ASSERT_EQ(pitch.scene.segments.size(), 2u);
   expect_near(pitch.scene.segments[1].end, {0, 1, -1});
   expect_near(pitch.scene.segments[1].up, {0, 1, 0});
   CpfgModel force = cpfg_lsystem("twist-force", "Axiom: F/(90)@Tf+(90)F");
   ASSERT_EQ(force.scene.segments.size(), 2u);
-  expect_near(force.scene.segments[1].end, {0, 1, 1});
+  expect_near(force.scene.segments[1].end, {0, 1, -1});
+  // @Tf makes the roll the twist @Tp keeps: cpfg gives the same ?P with @Tf@Tp.
+  CpfgModel kept = cpfg_lsystem("twist-force-kept", "Axiom: F/(90)&(90)@Tf@Tp F");
+  ASSERT_EQ(kept.scene.segments.size(), 2u);
+  expect_near(kept.scene.segments[1].end, {1, 1, 0});
+  expect_near(kept.scene.segments[1].up, {0, 1, 0});
 }
 
 // ---- @; @, ------------------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "io/string_text.h"
 #include "io/view_file.h"
 #include "turtle/cpfg_symbols.h"
 #include "turtle/turtle_fixture.h"
@@ -85,14 +86,15 @@ TEST(CpfgTurtle, StepsDefaultToOneAndTakeTheirParameter) {
 }
 
 TEST(CpfgTurtle, PitchRollAndTurnAround) {
-  // & pitches H down toward -U, ^ up toward U (U = +z at first).
+  // The ends are the reference cpfg's ?P after each branch's F's (angle
+  // factor 4): F&F (0,1,-1), F^F (0,1,1), F/+F (0,1,-1), F\+F (0,1,1), F|F (0,0,0).
   Scene s = draw_cpfg("pitch", "[F&F][F^F][F/+F][F\\+F][F|F]");
   ASSERT_EQ(s.segments.size(), 10u);
   expect_near(s.segments[1].end, {0, 1, -1});
   expect_near(s.segments[3].end, {0, 1, 1});
-  // / rolls right: L goes to +z, so + then heads along +z; \ the other way.
-  expect_near(s.segments[5].end, {0, 1, 1});
-  expect_near(s.segments[7].end, {0, 1, -1});
+  // cpfg's U starts at -z: / rolls L towards it, so + then heads along -z.
+  expect_near(s.segments[5].end, {0, 1, -1});
+  expect_near(s.segments[7].end, {0, 1, 1});
   // | turns around: back to the start.
   expect_near(s.segments[9].end, {0, 0, 0});
 }
@@ -114,15 +116,20 @@ TEST(CpfgTurtle, MoveToAndSetHeading) {
 }
 
 TEST(CpfgTurtle, RollToVerticalKeepsUpOnTheUpperSide) {
-  // After pitching up 45 degrees and rolling, @v (and $) bring U back above H.
-  for (const char* roll : {"@v", "$"}) {
-    Scene s = draw_cpfg(std::string("vertical-") + (roll[0] == '$' ? "dollar" : "at"),
-                        std::string("&(45)/(70)") + roll + "F", "angle increment: 90");
-    ASSERT_EQ(s.segments.size(), 1u);
-    const Vec3 up = s.segments[0].up;
-    EXPECT_NEAR(up.x, 0, 1e-5f) << roll;  // H and U in the vertical plane x = 0
-    EXPECT_GT(up.y, 0) << roll;
-  }
+  // After pitching 45 degrees and rolling, @v brings U into the vertical
+  // plane of H: the reference cpfg gives ?U(0,-0.707107,-0.707107) after
+  // &(45)/(70)@v. A segment's up is the frame's, cpfg's U negated.
+  Scene s = draw_cpfg("vertical-at", "&(45)/(70)@vF", "angle increment: 90");
+  ASSERT_EQ(s.segments.size(), 1u);
+  expect_near(s.segments[0].up, {0, 0.707107f, 0.707107f});
+}
+
+TEST(CpfgTurtle, DollarDoesNotRoll) {
+  // cpfg's $ only ends a sub-L-system (interpret.c); the reference cpfg
+  // gives the same ?H after +(30)&(20)$ as after +(30)&(20): (-0.469846,0.813798,-0.34202).
+  Scene s = draw_cpfg("dollar", "+(30)&(20)$F", "angle increment: 90");
+  ASSERT_EQ(s.segments.size(), 1u);
+  expect_near(s.segments[0].end, {-0.469846f, 0.813798f, -0.34202f});
 }
 
 // ---- width and colour -------------------------------------------------------------
@@ -286,9 +293,11 @@ TEST(CpfgTurtle, QueryWithTwoParametersGetsXAndY) {
   EXPECT_NEAR(xy[1], 0, 1e-5);
 }
 
-TEST(CpfgTurtle, NoQueryPassWithoutQueriesInPredecessors) {
+TEST(CpfgTurtle, QueriesAreFilledWithoutAProductionReadingThem) {
+  // cpfg fills ?P wherever it occurs: the reference cpfg gives F?P(0,1,0).
   CpfgModel m = cpfg_model("no-query", "A", "", "A --> F?P(0,0,0)", 1);
-  EXPECT_FALSE(m.simulation->derivation().uses_query_modules());
+  EXPECT_TRUE(m.simulation->derivation().uses_query_modules());
+  EXPECT_EQ(io::format_string(m.simulation->derivation().string(), m.simulation->types()), "F?P(0,1,0)\n");
 }
 
 TEST(CpfgTurtle, SymbolTableIsByModuleId) {

@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 8;
+inline constexpr std::uint32_t kAbiVersion = 9;
 
 using ModuleId = std::uint16_t;
 
@@ -151,6 +151,10 @@ struct ControlState {
   // (the model's file and line), so a group the model lacks can be reported there.
   const char* group_call_file = nullptr;
   int group_call_line = 0;
+  // Added in ABI version 9: a cpfg model's stochastic productions are chosen
+  // from its seed: as cpfg's window seeds drand48 (seed48({seed, 0, 155}));
+  // false: as cpfg's batch runs (-g), which never seed it (state 0).
+  bool cpfg_window_seeding = false;
 };
 
 // The state lpfg gives both of its generators when it loads a model (erand48
@@ -187,6 +191,10 @@ enum InputQuery : int {
   kQueryFunctionLimits,     // in: min, max           out: - (pfunc sets them, for good)
   kQueryCpfgFunction,       // in: x                  out: y (cpfg's func, in double)
   kQuerySurfacePoint,       // in: point              out: x, y, z (point 16p + k: patch p's k-th)
+  // Added in ABI version 9: cpfg's vvXmin() ... vvScale() as a batch run
+  // has them: no window, so the x and y extents are 0; the view file's front
+  // and back distance and scale.
+  kQueryCpfgViewVolume,     // in: -                  out: xmin, xmax, ymin, ymax, zmin, zmax, scale
 };
 
 struct ModelDescriptor {
@@ -203,7 +211,10 @@ struct ModelDescriptor {
   void (*axiom)(ModuleBuffer* out);
   int (*derivation_length)();
   int (*decomposition_depth)();   // null: the default depth, 1
-  int (*interpretation_depth)();  // null: the default depth, 1
+  // null: the default depth, 1. Called once at the start of every
+  // interpretation pass (cpfg models restart a homomorphism's own random
+  // stream there).
+  int (*interpretation_depth)();
   int (*ring)();                  // null: not a ring L-system
   void (*start)();
   void (*start_each)();
@@ -213,6 +224,11 @@ struct ModelDescriptor {
   std::uint32_t flags;  // kModelCpfg ...
   // Called by a forward derivation step for every module of the old string
   // before its productions are tried (cpfg's stochastic draw); may be null.
+  // With kModelProbeProductions, a module's productions are tried twice: a
+  // probing pass, in which the rules that apply say so to the model and
+  // produce nothing, then before_module(kNoModule) and the real pass.
+  // For sub-L-system models, ControlState::current_group holds the label of
+  // the module's L-system during the call.
   void (*before_module)(ModuleId id);
   // Added in ABI version 3: cpfg's sub-L-systems (CPFG manual 7.2), when
   // flags has kModelSubLsystems. Rule::group is then the label of the
@@ -243,6 +259,8 @@ inline constexpr ModuleId kNoModule = 0xFFFF;
 // ModelDescriptor::flags
 inline constexpr std::uint32_t kModelCpfg = 1;  // a cpfg model: cpfg's string format and derivation
 inline constexpr std::uint32_t kModelSubLsystems = 2;  // cpfg sub-L-systems: see main_lsystem
+// cpfg's stochastic choice among the productions that apply: see before_module.
+inline constexpr std::uint32_t kModelProbeProductions = 4;
 
 using ModelEntryPoint = const ModelDescriptor* (*)();
 inline constexpr const char* kEntryPointName = "sylva_model_v1";
