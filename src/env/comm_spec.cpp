@@ -20,9 +20,13 @@ class SpecParser {
     std::string line;
     int number = 0;
     while (std::getline(lines, line)) parse_line(line, ++number);
-    const int last_line = std::max(number, 1);
+    // lpfg ("Environment command line not specified") and the communication
+    // library ("no executable for field process specified. Environment
+    // ignored.") go on without the environment.
     if (spec_.executable.empty())
-      fail(last_line, std::string::npos, "missing 'executable:' (the environmental program to run)");
+      spec_.warnings.push_back(spec_.path + ":" + std::to_string(std::max(number, 1)) +
+                               ": warning: no 'executable:' names the environmental program; the environment is "
+                               "ignored, as lpfg and cpfg ignore it");
     return std::move(spec_);
   }
 
@@ -56,7 +60,10 @@ class SpecParser {
 
     if (command == "executable") {
       once(at, command);
-      if (value.empty()) fail(number, value_start, "expected the command line of the environmental program");
+      if (value.empty()) {  // the communication library reads no command line and keeps what it had
+        warn(number, value_start, "expected the command line of the environmental program; line ignored");
+        return;
+      }
       spec_.executable = value;
       spec_.executable_line = number;
       spec_.executable_column = static_cast<int>(value_start) + 1;

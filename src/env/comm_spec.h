@@ -19,7 +19,9 @@ namespace sylva::env {
 struct CommSpec {
   std::string path;  // the .e file as named
 
-  std::string executable;  // the command line, as written
+  // The command line, as written; empty when the file names none (lpfg and
+  // cpfg then run without the environment, and so does Sylva).
+  std::string executable;
   int executable_line = 0;
   int executable_column = 0;  // 1-based, where the command line starts
   // files, memory, pipes or sockets (lower case, as written). Whatever it
@@ -42,8 +44,9 @@ struct CommSpec {
 };
 
 // Reads a .e file. What lpfg and cpfg pass over is a warning (`warnings`);
-// a ModelError at file:line:column stops the run where they would fail or
-// garble the exchange: no executable, a turtle format that printf cannot
+// so is a missing executable (the environment is then ignored, as they
+// ignore it). A ModelError at file:line:column stops the run where they
+// would fail or garble the exchange: a turtle format that printf cannot
 // apply to the turtle's numbers or that sends no number.
 CommSpec read_comm_spec(const std::string& path);
 // The same from text already read; `path` names it in errors.

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -163,14 +164,11 @@ ProgramInvocation invocation_of(const CommSpec& spec) {
   return invocation;
 }
 
-std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options) {
-  const SourceLocation where{spec.path, spec.executable_line, spec.executable_column};
-  const ProgramInvocation invocation = invocation_of(spec);
-  const std::string base = fs::path(invocation.program).filename().string();
-  for (const Builtin& builtin : kBuiltins)
-    if (base == builtin.name) return through_comm_library(builtin.make(invocation), spec, options.master, options.warn);
-  if (ends_with(invocation.program, ".so")) return load_plugin(invocation, where);
+namespace {
 
+std::unique_ptr<Field> start_external_program(const CommSpec& spec, const ProgramInvocation& invocation,
+                                              const FieldOptions& options) {
+  const SourceLocation where{spec.path, spec.executable_line, spec.executable_column};
   const fs::path program = find_program(invocation);
   if (program.empty()) {
     std::string builtins;
@@ -179,10 +177,40 @@ std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& opti
                                    ? "no executable file " + invocation.resolve(invocation.program).string()
                                    : "not a built-in program (" + builtins + "), not on PATH and not in " +
                                          invocation.directory.string();
-    throw ModelError(where, "environmental program '" + invocation.program + "' not found: " + looked);
+    throw ProgramNotStarted(where, "environmental program '" + invocation.program + "' not found: " + looked);
   }
   return std::make_unique<ExternalProgramField>(fs::absolute(program).string(), invocation, spec,
                                                 options.timeout_seconds);
+}
+
+// "file:line:column: warning: message".
+std::string warning_at(const SourceLocation& at, const std::string& message) {
+  std::string text = at.file;
+  if (at.line > 0) text += ":" + std::to_string(at.line);
+  if (at.column > 0) text += ":" + std::to_string(at.column);
+  return text + ": warning: " + message;
+}
+
+}  // namespace
+
+std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options) {
+  // The reader has warned that no program is named.
+  if (spec.executable.empty()) return std::make_unique<IgnoredEnvironment>();
+  const SourceLocation where{spec.path, spec.executable_line, spec.executable_column};
+  const ProgramInvocation invocation = invocation_of(spec);
+  const std::string base = fs::path(invocation.program).filename().string();
+  for (const Builtin& builtin : kBuiltins)
+    if (base == builtin.name) return through_comm_library(builtin.make(invocation), spec, options.master, options.warn);
+  if (ends_with(invocation.program, ".so")) return load_plugin(invocation, where);
+  try {
+    return start_external_program(spec, invocation, options);
+  } catch (const ProgramNotStarted& not_started) {
+    const std::string text = warning_at(not_started.where(), not_started.message()) +
+                             "; the environment is ignored, as lpfg and cpfg ignore a program they cannot start\n";
+    if (options.warn) options.warn(text);
+    else std::fputs(text.c_str(), stderr);
+    return std::make_unique<IgnoredEnvironment>();
+  }
 }
 
 }  // namespace sylva::env

@@ -20,6 +20,7 @@
 #include "env/comm_spec.h"
 #include "env/field.h"
 #include "env/program.h"
+#include "support/diagnostic.h"
 
 namespace sylva::env {
 
@@ -49,11 +50,30 @@ struct FieldOptions {
   std::function<void(const std::string&)> warn;
 };
 
+// An environmental program that cannot be started: not found, not
+// executable, or ended before it said it was ready. lpfg ("Environmental
+// program ... did not start.") and cpfg ("Field process ... is not started.
+// Environment ignored.") then derive without the environment; make_field
+// does the same with a warning.
+class ProgramNotStarted : public ModelError {
+ public:
+  using ModelError::ModelError;
+};
+
+// The environment of a .e file whose program is not run: the passes still
+// interpret the string, as lpfg and cpfg do, and nothing answers.
+class IgnoredEnvironment : public Field {
+ public:
+  void answer(std::span<const Query>, std::span<Answer>, int) override {}
+};
+
 // The executable: line of `spec` split into words as a shell would.
 ProgramInvocation invocation_of(const CommSpec& spec);
 
-// The Field for `spec`; a ModelError at the executable: line when the program
-// cannot be found, loaded or started.
+// The Field for `spec`. A program that cannot be started (ProgramNotStarted),
+// or a .e file without an executable, gives an IgnoredEnvironment, after a
+// warning at the executable: line through options.warn; a plugin that cannot
+// be loaded is a ModelError there.
 std::unique_ptr<Field> make_field(const CommSpec& spec, const FieldOptions& options = {});
 
 }  // namespace sylva::env

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <unordered_map>
 
+#include "env/environment.h"
 #include "support/diagnostic.h"
 
 namespace sylva::env {
@@ -97,6 +98,7 @@ struct ExternalProgramField::Process {
   int from_program = -1;  // the program's standard output
   std::string received;   // read, not yet split into lines
   bool failed = false;
+  bool ended = false;  // its output closed while an answer was awaited
 
   [[noreturn]] void fail(const std::string& what) {
     failed = true;
@@ -198,6 +200,7 @@ struct ExternalProgramField::Process {
     // A program that ends after answering has done its part of this pass;
     // the next one reports it.
     if (answered) return false;
+    ended = true;
     fail(exit_description() + " " + during);
   }
 
@@ -279,7 +282,7 @@ ExternalProgramField::ExternalProgramField(const std::string& executable, const 
     ::close(in_pipe[1]);
     ::close(out_pipe[0]);
     ::close(exec_status[0]);
-    throw ModelError(p.where, "cannot start environmental program '" + p.name + "': " + std::strerror(error));
+    throw ProgramNotStarted(p.where, "cannot start environmental program '" + p.name + "': " + std::strerror(error));
   }
   p.pid = pid;
   p.to_program = in_pipe[1];
@@ -291,8 +294,8 @@ ExternalProgramField::ExternalProgramField(const std::string& executable, const 
   ::close(exec_status[0]);
   if (got == static_cast<ssize_t>(sizeof exec_error)) {
     p.stop(true);
-    throw ModelError(p.where, "cannot start environmental program '" + p.name + "' (" + executable +
-                                  "): " + std::strerror(exec_error));
+    throw ProgramNotStarted(p.where, "cannot start environmental program '" + p.name + "' (" + executable +
+                                         "): " + std::strerror(exec_error));
   }
 
   std::string header = std::string(kProtocolGreeting) + "\n";
@@ -303,10 +306,17 @@ ExternalProgramField::ExternalProgramField(const std::string& executable, const 
   }
   header += std::string("verbose ") + (spec.verbose ? "yes" : "no") + "\n";
   header += "end-header\n";
-  p.exchange(header, "ready", "before saying it was ready", [&p](const std::string& line) {
-    p.fail("sent '" + shortened(line) + "' instead of 'ready' (is it built with the sylva_comm library, and does " +
-           "it write nothing else to its standard output?)");
-  });
+  try {
+    p.exchange(header, "ready", "before saying it was ready", [&p](const std::string& line) {
+      p.fail("sent '" + shortened(line) + "' instead of 'ready' (is it built with the sylva_comm library, and does " +
+             "it write nothing else to its standard output?)");
+    });
+  } catch (const ModelError& error) {
+    // A program that ends before it is ready did not start, for the
+    // communication library as for lpfg.
+    if (p.ended) throw ProgramNotStarted(error.where(), error.message());
+    throw;
+  }
 }
 
 ExternalProgramField::~ExternalProgramField() {

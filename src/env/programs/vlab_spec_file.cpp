@@ -1,6 +1,8 @@
 #include "env/programs/vlab_spec_file.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -23,6 +25,15 @@ std::optional<double> SpecLineTokens::next_number(const char* delimiters) {
   bool complete = false;
   const double value = leading_number(*token, &complete);
   if (!complete) warn("'" + *token + "' is not a number; read as " + std::to_string(value) + ", as atof reads it");
+  return value;
+}
+
+std::optional<int> SpecLineTokens::next_integer(const char* delimiters) {
+  std::optional<std::string> token = next(delimiters);
+  if (!token) return std::nullopt;
+  bool complete = false;
+  const int value = leading_integer(*token, &complete);
+  if (!complete) warn("'" + *token + "' is not a whole number; read as " + std::to_string(value) + ", as atoi reads it");
   return value;
 }
 
@@ -52,6 +63,15 @@ double leading_number(const std::string& text, bool* complete) {
   const double value = std::strtod(start, &end);
   if (complete) *complete = end != start && *end == '\0';
   return end == start ? 0.0 : value;
+}
+
+int leading_integer(const std::string& text, bool* complete) {
+  const char* start = text.c_str();
+  char* end = nullptr;
+  const long long value = std::strtoll(start, &end, 10);
+  if (complete) *complete = end != start && *end == '\0';
+  if (end == start) return 0;
+  return static_cast<int>(std::clamp<long long>(value, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
 bool read_vlab_spec_file(const std::filesystem::path& path, const std::string& program,

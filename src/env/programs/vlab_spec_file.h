@@ -33,6 +33,9 @@ class SpecLineTokens {
   // The next token read with atof (a warning when the token is not a number
   // in full); nullopt at the end of the line.
   std::optional<double> next_number(const char* delimiters);
+  // The next token read with atoi (a warning when the token is not a whole
+  // number in full); nullopt at the end of the line.
+  std::optional<int> next_integer(const char* delimiters);
 
   // A switch as these programs read one: the next token sets `flag` to
   // `value` when it is one of `sets`, and leaves it as it is otherwise (with
@@ -62,5 +65,8 @@ bool read_vlab_spec_file(const std::filesystem::path& path, const std::string& p
 // atof: the longest number at the start of `text` (after blanks), 0 when
 // there is none; `complete` says whether the number was all of `text`.
 double leading_number(const std::string& text, bool* complete = nullptr);
+// atoi: the longest whole number at the start of `text` ("2.5" reads 2), 0
+// when there is none; clamped to the range of int.
+int leading_integer(const std::string& text, bool* complete = nullptr);
 
 }  // namespace sylva::env
