@@ -73,7 +73,7 @@ TEST(CommSpec, ReadsAFile) {
 }
 
 // Where lpfg or cpfg would print a format's text for numbers it cannot take,
-// or have no program to start, the run stops.
+// the run stops.
 TEST(CommSpec, UnusableFilesPointAtTheFault) {
   // The fourth conversion of "%g %g %g %g" starts at column 27.
   EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle position: %g %g %g %g\n"),
@@ -84,10 +84,24 @@ TEST(CommSpec, UnusableFilesPointAtTheFault) {
             "plant.e:3:17: error: expected a number conversion such as %g, %f or %.3f");
   EXPECT_EQ(error_of("executable: a\ncommunication type: pipes\nturtle up: none\n"),
             "plant.e:3:12: error: expected a format with at least one conversion, such as %g");
-  EXPECT_EQ(error_of("executable:\ncommunication type: pipes\n"),
-            "plant.e:1:12: error: expected the command line of the environmental program");
-  EXPECT_EQ(error_of("communication type: pipes\n"),
-            "plant.e:1: error: missing 'executable:' (the environmental program to run)");
+}
+
+// lpfg ("Environment command line not specified") and the communication
+// library ("Environment ignored") run without the environment when the file
+// names no program: a warning, and no executable.
+TEST(CommSpec, WithoutAProgramTheEnvironmentIsIgnored) {
+  const CommSpec empty = parse_comm_spec("executable:\ncommunication type: pipes\n", "plant.e");
+  EXPECT_TRUE(empty.executable.empty());
+  ASSERT_EQ(empty.warnings.size(), 2u);
+  EXPECT_EQ(empty.warnings[0].rfind("plant.e:1:12: warning: expected the command line of the environmental program", 0), 0u)
+      << empty.warnings[0];
+  const CommSpec none = parse_comm_spec("communication type: pipes\n", "plant.e");
+  EXPECT_TRUE(none.executable.empty());
+  ASSERT_EQ(none.warnings.size(), 1u);
+  EXPECT_NE(none.warnings[0].find("plant.e:1: warning: no 'executable:' names the environmental program; the "
+                                  "environment is ignored"),
+            std::string::npos)
+      << none.warnings[0];
 }
 
 // What lpfg and cpfg pass over (lpfg's "Unrecognized command", the

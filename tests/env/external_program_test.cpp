@@ -162,15 +162,30 @@ TEST(ExternalProgram, GarbageIsRefused) {
                     "built with the sylva_comm library, and does it write nothing else to its standard output?)");
 }
 
-TEST(ExternalProgram, AnUnknownProgramIsNamedWithTheLine) {
+// lpfg and cpfg go on without an environment they cannot start: a warning
+// at the executable: line says why, and nothing answers.
+TEST(ExternalProgram, AnUnknownProgramIsIgnoredWithAWarningAtTheLine) {
   const Folder f{make_temp_dir("env-unknown")};
-  EXPECT_EQ(failure(spec_for(f, "no-such-environment-program par.txt")),
-            f.dir + "/plant.e:1:13: error: environmental program 'no-such-environment-program' not found: not a "
+  auto warning_for = [&](const std::string& executable) {
+    std::string warnings;
+    env::FieldOptions options;
+    options.warn = [&](const std::string& text) { warnings += text; };
+    std::unique_ptr<env::Field> field = env::make_field(spec_for(f, executable), options);
+    std::vector<env::Query> queries(1);
+    std::vector<env::Answer> answers(1);
+    field->answer(queries, answers, 1);
+    EXPECT_TRUE(answers[0].set.none());
+    return warnings;
+  };
+  EXPECT_EQ(warning_for("no-such-environment-program par.txt"),
+            f.dir + "/plant.e:1:13: warning: environmental program 'no-such-environment-program' not found: not a "
                     "built-in program (honda81, ecosystem, arvo, density, clover, chiba, takenaka), not on PATH "
-                    "and not in " + f.dir);
-  EXPECT_EQ(failure(spec_for(f, "./missing")),
-            f.dir + "/plant.e:1:13: error: environmental program './missing' not found: no executable file " +
-                f.dir + "/./missing");
+                    "and not in " + f.dir + "; the environment is ignored, as lpfg and cpfg ignore a program they "
+                    "cannot start\n");
+  EXPECT_EQ(warning_for("./missing"),
+            f.dir + "/plant.e:1:13: warning: environmental program './missing' not found: no executable file " +
+                f.dir + "/./missing; the environment is ignored, as lpfg and cpfg ignore a program they cannot "
+                "start\n");
 }
 
 TEST(ExternalProgram, AnAnswerForAMissingParameterIsNamed) {

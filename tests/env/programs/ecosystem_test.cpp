@@ -1,5 +1,6 @@
 // ecosystem (EnviroManual 3.1.2): overlapping disks or spheres of different
-// radii; the smaller (or, with vigor, the weaker) one is answered 0.
+// radii; the smaller (or, with vigor, the weaker) one is answered 0, by the
+// rules of the Virtual Laboratory's program (src/env/programs/ecosystem.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,25 +16,32 @@ std::unique_ptr<Field> ecosystem(const std::string& parameters) {
   return make_ecosystem(invocation_with("ecosystem", {{"eco.par", parameters}}));
 }
 
+// Disks lie in x and z (the turtle's y is left out), as the real program
+// places them.
 TEST(Ecosystem, SmallerOfTwoOverlappingDisksCollides) {
   auto field = ecosystem("grid size: 10 10\n");
   // Radii 2 and 1, 2.5 apart: overlap (2.5 < 3). A third disk of radius 0.5
-  // at distance 4 from the second, 5.5 from the first: free.
+  // at distance 4 from the second (along z), 4.7 from the first: free.
   auto answers = answer_all(*field, {query_at({0, 0, 0}, {2}), query_at({2.5f, 0, 0}, {1}),
-                                     query_at({2.5f, 4, 0}, {0.5f})});
+                                     query_at({2.5f, 0, 4}, {0.5f})});
   EXPECT_EQ(first_answer(answers[0]), 1.0f);
   EXPECT_EQ(first_answer(answers[1]), 0.0f);
   EXPECT_EQ(first_answer(answers[2]), 1.0f);
 }
 
-TEST(Ecosystem, EqualRadiiBothCollideTouchingDoesNot) {
+// "<=" in both of the program's tests: an equal radius beats, and touching
+// disks collide.
+TEST(Ecosystem, EqualRadiiBothCollideAndTouchingCollides) {
   auto field = ecosystem("grid size: 4 4\n");
   auto answers = answer_all(*field, {query_at({0, 0, 0}, {1}), query_at({1.9f, 0, 0}, {1}),
-                                     query_at({10, 0, 0}, {1}), query_at({12, 0, 0}, {1})});
-  EXPECT_EQ(first_answer(answers[0]), 0.0f);  // "less than or equal to" the other's radius
+                                     query_at({10, 0, 0}, {1}), query_at({12, 0, 0}, {1}),
+                                     query_at({20, 0, 0}, {1}), query_at({22.5f, 0, 0}, {1})});
+  EXPECT_EQ(first_answer(answers[0]), 0.0f);
   EXPECT_EQ(first_answer(answers[1]), 0.0f);
-  EXPECT_EQ(first_answer(answers[2]), 1.0f);  // exactly r1 + r2 apart
-  EXPECT_EQ(first_answer(answers[3]), 1.0f);
+  EXPECT_EQ(first_answer(answers[2]), 0.0f);  // exactly r1 + r2 apart
+  EXPECT_EQ(first_answer(answers[3]), 0.0f);
+  EXPECT_EQ(first_answer(answers[4]), 1.0f);  // 2.5 apart
+  EXPECT_EQ(first_answer(answers[5]), 1.0f);
 }
 
 TEST(Ecosystem, DiskInsideABiggerDiskCollides) {
@@ -45,22 +53,36 @@ TEST(Ecosystem, DiskInsideABiggerDiskCollides) {
 
 TEST(Ecosystem, VigorDecidesBeforeRadius) {
   auto field = ecosystem("grid size: 8 8\nvigor: on\n");
-  // Pair A: the big disk has the lower vigor and loses. Pair B: equal vigor,
-  // the radius decides. Pair C: equal vigor and radius: both lose.
+  // Pair A: the big disk has the lower vigor and loses; having lost, it
+  // stops nothing. Pair B: equal vigor, the strictly larger radius wins.
+  // Pair C: equal vigor and radius: neither loses.
   auto answers = answer_all(*field, {query_at({0, 0, 0}, {3, 0.2f}), query_at({2, 0, 0}, {1, 0.8f}),
-                                     query_at({0, 20, 0}, {3, 0.5f}), query_at({2, 20, 0}, {1, 0.5f}),
-                                     query_at({0, 40, 0}, {1, 0.5f}), query_at({1, 40, 0}, {1, 0.5f})});
+                                     query_at({0, 0, 20}, {3, 0.5f}), query_at({2, 0, 20}, {1, 0.5f}),
+                                     query_at({0, 0, 40}, {1, 0.5f}), query_at({1, 0, 40}, {1, 0.5f})});
   EXPECT_EQ(first_answer(answers[0]), 0.0f);
   EXPECT_EQ(first_answer(answers[1]), 1.0f);
   EXPECT_EQ(first_answer(answers[2]), 1.0f);
   EXPECT_EQ(first_answer(answers[3]), 0.0f);
-  EXPECT_EQ(first_answer(answers[4]), 0.0f);
-  EXPECT_EQ(first_answer(answers[5]), 0.0f);
+  EXPECT_EQ(first_answer(answers[4]), 1.0f);
+  EXPECT_EQ(first_answer(answers[5]), 1.0f);
   for (const Answer& answer : answers) EXPECT_FALSE(answer.set[1]);
 }
 
-TEST(Ecosystem, ThreeDimensionsSeparateByZ) {
-  std::vector<Query> queries = {query_at({0, 0, 0}, {1}), query_at({0, 0, 2.5f}, {0.5f})};
+// An object that has lost no longer stops the ones after it (string order).
+TEST(Ecosystem, WithVigorALoserStopsNothing) {
+  auto field = ecosystem("grid size: 8 8\nvigor: on\n");
+  // 0 loses to 1 (a higher vigor). 2 overlaps only 0, whose vigor is higher
+  // than its own, but 0 has lost by the time 2 is tested: 2 stays.
+  auto answers = answer_all(*field, {query_at({0, 0, 0}, {1, 0.5f}), query_at({-1.5f, 0, 0}, {1, 0.9f}),
+                                     query_at({1.5f, 0, 0}, {1, 0.1f})});
+  EXPECT_EQ(first_answer(answers[0]), 0.0f);
+  EXPECT_EQ(first_answer(answers[1]), 1.0f);
+  EXPECT_EQ(first_answer(answers[2]), 1.0f);
+}
+
+TEST(Ecosystem, ThreeDimensionsSeparateByY) {
+  // In 2D the turtle's y is not used: these overlap; in 3D they are 2.5 apart.
+  std::vector<Query> queries = {query_at({0, 0, 0}, {1}), query_at({0, 2.5f, 0}, {0.5f})};
   EXPECT_EQ(first_answer(answer_all(*ecosystem("grid size: 5 5\n"), queries)[1]), 0.0f);
   EXPECT_EQ(first_answer(answer_all(*ecosystem("grid size: 5 5 5\n3d case: on\n"), queries)[1]), 1.0f);
   // The z of the grid size is optional in 3D too.
@@ -91,44 +113,50 @@ TEST(Ecosystem, AgreesWithComparingEveryPair) {
   for (int i = 0; i < 2000; ++i)
     queries.push_back(query_at({20 * next(), 20 * next(), 20 * next()}, {0.1f + next(), std::floor(3 * next())}));
   auto answers = answer_all(*field, queries);
+  // The rule worked pair by pair in string order, in float as the program
+  // computes it: an object loses to any colliding one that has not lost
+  // before it is tested and has a higher vigor, or an equal vigor and a
+  // strictly larger radius.
+  std::vector<bool> lost(queries.size(), false);
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    bool beaten = false;
     const auto& pi = queries[i].module.parameters;
     for (std::size_t j = 0; j < queries.size(); ++j) {
-      if (j == i) continue;
+      if (j == i || lost[j]) continue;
       const auto& pj = queries[j].module.parameters;
-      double d2 = 0;
+      float d2 = 0;
       for (int a = 0; a < 3; ++a) {
-        double d = queries[i].turtle.position[a] - queries[j].turtle.position[a];
+        const float d = queries[i].turtle.position[a] - queries[j].turtle.position[a];
         d2 += d * d;
       }
-      double reach = static_cast<double>(pi[0]) + pj[0];
-      bool loses = pi[1] != pj[1] ? pi[1] < pj[1] : pi[0] <= pj[0];
-      if (d2 < reach * reach && loses) beaten = true;
+      const float reach = pi[0] + pj[0];
+      const bool loses = pi[1] < pj[1] || (pi[1] == pj[1] && pi[0] < pj[0]);
+      if (d2 <= reach * reach && loses) lost[i] = true;
     }
-    ASSERT_EQ(first_answer(answers[i]), beaten ? 0.0f : 1.0f) << i;
+    ASSERT_EQ(first_answer(answers[i]), lost[i] ? 0.0f : 1.0f) << i;
   }
 }
 
-TEST(Ecosystem, ParameterErrors) {
+// The specification is read as the program reads it: numbers with atoi,
+// anything else a warning; only a grid it could not hold stops it.
+TEST(Ecosystem, SpecificationAsTheProgramReadsIt) {
   auto message = [](const std::string& parameters) {
     try {
       ecosystem(parameters);
-    } catch (const ModelError& error) {
+    } catch (const std::exception& error) {
       return std::string(error.what());
     }
     return std::string("no error");
   };
-  EXPECT_NE(message("vigor: on\n").find("needs 'grid size:'"), std::string::npos);
-  EXPECT_NE(message("grid size: 10\n").find(":1:14: error: expected 2 or 3 numbers"), std::string::npos)
-      << message("grid size: 10\n");
-  EXPECT_NE(message("grid size: 10 ten\n").find(":1:15: error: expected a number, found 'ten'"), std::string::npos);
-  EXPECT_NE(message("grid size: 10 0\n").find("expected whole numbers of voxels"), std::string::npos);
+  EXPECT_EQ(message("grid size: 10 ten\n3D case: one\n"), "no error");
+  EXPECT_NE(message("grid size: 100000 100000 100000\n3d case: on\n").find("more than this program can hold"),
+            std::string::npos);
 }
 
-TEST(Ecosystem, VigorNeedsTwoParameters) {
+TEST(Ecosystem, WithVigorAModuleWithOneParameterTakesNoPart) {
   auto field = ecosystem("grid size: 2 2\nvigor: on\n");
-  EXPECT_THROW(answer_all(*field, {query_at({0, 0, 0}, {1})}), std::runtime_error);
+  auto answers = answer_all(*field, {query_at({0, 0, 0}, {1}), query_at({0.5f, 0, 0}, {0.5f, 1})});
+  EXPECT_FALSE(answers[0].set[0]);
+  EXPECT_EQ(first_answer(answers[1]), 1.0f);  // the other is not there to stop it
 }
 
 }  // namespace
