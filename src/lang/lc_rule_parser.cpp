@@ -178,7 +178,17 @@ Body LcParser::parse_body(bool produce_allowed, bool gillespie) {
   Body body;
   BodyPart code;
   code.kind = BodyPart::kCode;
-  if (!peek().is_punct("{")) fail(peek(), "expected '{' to begin the body, found " + describe(peek()));
+  // lpfg's translator turns a produce statement into a block of its own, so
+  // one may stand for the whole body: "A(t) : produce A(t+dt);".
+  if (peek().is_ident("produce") && produce_allowed && !gillespie) {
+    BodyPart produce;
+    produce.kind = BodyPart::kProduce;
+    produce.at = next();
+    produce.modules = parse_module_calls("a produce statement");
+    body.push_back(std::move(produce));
+    return body;
+  }
+  if (!peek().is_punct("{")) fail(peek(), "expected '{' or a produce statement to begin the body, found " + describe(peek()));
   const Token& opening = peek();
   int depth = 0;
   do {
