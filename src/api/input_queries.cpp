@@ -117,6 +117,16 @@ const std::vector<Vec3>& InputAnswers::curve(int id) {
   return samples;
 }
 
+const geometry::CpfgCurve& InputAnswers::cpfg_curve(int id) {
+  if (cpfg_curves_.empty()) cpfg_curves_.resize(files_.curves.size());
+  std::unique_ptr<geometry::CpfgCurve>& curve = cpfg_curves_[static_cast<std::size_t>(id - 1)];
+  if (!curve) {
+    const geometry::Contour& contour = files_.curves[static_cast<std::size_t>(id - 1)];
+    curve = std::make_unique<geometry::CpfgCurve>(contour, contour.samples);
+  }
+  return *curve;
+}
+
 void InputAnswers::restore_curves() {
   if (original_contours_.empty()) return;
   files_.contours = original_contours_;
@@ -176,6 +186,13 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
     case abi::kQueryCurvePoint:
     case abi::kQueryCurveNormal: {
       if (id < 1 || id > static_cast<int>(curve_source().size())) return false;
+      if (query == abi::kQueryCurvePoint && !files_.curves.empty()) {
+        const Vec3 p = cpfg_curve(id).at(in[0]);
+        out[0] = p.x;
+        out[1] = p.y;
+        out[2] = p.z;
+        return true;
+      }
       Vec3 tangent;
       Vec3 p = curve_point(curve_source()[static_cast<std::size_t>(id - 1)], curve(id), in[0], &tangent);
       // The normal lies in the curve's plane, to the right of the direction of travel.
@@ -187,6 +204,10 @@ bool InputAnswers::answer(int query, int id, const double* in, double* out) {
     }
     case abi::kQueryCurveLength: {
       if (id < 1 || id > static_cast<int>(curve_source().size())) return false;
+      if (!files_.curves.empty()) {
+        out[0] = cpfg_curve(id).length();
+        return true;
+      }
       const std::vector<Vec3>& points = curve(id);
       const geometry::Contour& contour = curve_source()[static_cast<std::size_t>(id - 1)];
       double length = 0;

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "geometry/curve_cpfg.h"
 #include "io/input_files.h"
 
 namespace sylva {
@@ -38,6 +39,9 @@ class InputAnswers {
   struct Evaluators;
   std::vector<Evaluators> functions_;
   std::vector<std::vector<geometry::Vec3>> curves_;
+  // cpfg's curves (InputFiles::curves) as cpfg evaluates them, made on first use.
+  const geometry::CpfgCurve& cpfg_curve(int id);
+  std::vector<std::unique_ptr<geometry::CpfgCurve>> cpfg_curves_;
   // The contours as read, kept from the first change on for curveReset.
   std::vector<geometry::Contour> original_contours_;
 };

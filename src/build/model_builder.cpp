@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped whenever generated code or the runtime's contract changes.
-constexpr const char* kCacheFormat = "sylva-model-cache-18";
+constexpr const char* kCacheFormat = "sylva-model-cache-19";
 
 const std::vector<std::string> kCompileFlags = {
     "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",

@@ -100,6 +100,35 @@ std::vector<Vec3> Contour::resample(int sides) const {
   return out;
 }
 
+Vec3 Contour::at_parameter(double t) const {
+  if (curve == Curve::Circle) {
+    const double a = kTwoPi * t;
+    return {static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)), 0};
+  }
+  if (points.empty()) return {};
+  if (points.size() == 1) return points[0];
+  t = std::clamp(t, 0.0, 1.0);
+  const std::size_t n = points.size();
+  if (curve == Curve::BSpline && !closed && n >= 4) {
+    // In double, with cpfg's slightly short parameter range, so that t = 1
+    // stays in the last segment.
+    const double u = t * (static_cast<double>(n) - 3.000001);
+    const std::size_t seg = std::min(static_cast<std::size_t>(u), n - 4);
+    const double f = u - static_cast<double>(seg), g = 1 - f;
+    const double b[4] = {g * g * g / 6, (3 * f * f * f - 6 * f * f + 4) / 6, (-3 * f * f * f + 3 * f * f + 3 * f + 1) / 6,
+                         f * f * f / 6};
+    double x = 0, y = 0, z = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      x += b[k] * points[seg + k].x;
+      y += b[k] * points[seg + k].y;
+      z += b[k] * points[seg + k].z;
+    }
+    return {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+  }
+  const Path c(points, closed, curve == Curve::BSpline);
+  return c.at(t * c.segments());
+}
+
 Contour Contour::circle() {
   Contour c;
   c.name = "circle";

@@ -27,6 +27,9 @@ struct Contour {
   // `sides` points spaced evenly (by arc length) along the curve, starting
   // where the curve starts; an open contour's ends are the first and last.
   std::vector<Vec3> resample(int sides) const;
+  // The point at parameter t in [0,1] spread evenly over the curve's
+  // segments (not by arc length), as cpfg's curves evaluate it.
+  Vec3 at_parameter(double t) const;
   // The default contour: a unit circle.
   static Contour circle();
 };

@@ -62,8 +62,9 @@ struct InputFiles {
   // file" commands, each at its id (ids it leaves out are circles).
   std::vector<geometry::Contour> contours;
   // The curves of cpfg's curve functions (curveX ... curveGAL, ids from 1):
-  // a cpfg view file's "curve:" files. Empty for lpfg, whose curve functions
-  // read `contours`.
+  // a cpfg view file's "curve:" files, each with its `samples` the size of
+  // cpfg's arc-length table (geometry/curve_cpfg.h). Empty for lpfg, whose
+  // curve functions read `contours`.
   std::vector<geometry::Contour> curves;
   // lpfg's one list of functions, whose ids (from 1) func, tfunc, pfunc and
   // val take: the functions of the .fset file, those of the .tset file, the

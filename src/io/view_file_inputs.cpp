@@ -105,7 +105,10 @@ void read_curves(InputFiles& inputs) {
   const ViewFile& view = *inputs.view;
   for (const FunctionCommand& c : view.curve_files) {
     try {
-      inputs.curves.push_back(read_curve_file(c.path));
+      geometry::Contour curve = read_curve_file(c.path);
+      // cpfg's table of arc lengths: the view file's count, 100 without one.
+      curve.samples = c.samples > 0 ? c.samples : 100;
+      inputs.curves.push_back(std::move(curve));
     } catch (const ModelError& e) {
       inputs.warnings.push_back(warning(view, c, e, "the curve is left out"));
     }

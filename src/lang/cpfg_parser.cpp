@@ -597,7 +597,10 @@ class CpfgParser {
       text += "::sylva::rt::cpfg::StreamSwap sylva_own_stream(sylva_cpfg_random.stream, sylva_cpfg_homomorphism_stream[" +
               std::to_string(blocks_.size() - 1) + "]); ";
     if (rule.kind == abi::RuleKind::Interpretation) blocks_.back().homomorphism_rules = true;
-    for (const std::string& local : scope.locals) text += "double " + cpfg::variable(local) + " = 0; ";
+    // cpfg keeps every variable in one table: what a production's statements
+    // assign keeps its value into the next module's production (a loop that
+    // does not run leaves the last module's value).
+    globals_.insert(scope.locals.begin(), scope.locals.end());
     text += before;
     if (condition != "true") text += "if (!(" + condition + ")) return; ";
     if (stochastic)

@@ -77,6 +77,15 @@ TEST(CpfgDialect, BlocksSpanLinesExpressionStatementsAndUnknownNames) {
   EXPECT_NE(r.err.find("m.l:12:23: warning: unknown variable 'w' read as 0"), std::string::npos) << r.err;
 }
 
+// cpfg keeps one table of variables: the second module's loop does not run,
+// and x keeps the first module's 3 (the reference cpfg gives B(3)B(3)).
+TEST(CpfgDialect, VariablesKeepTheirValuesFromModuleToModule) {
+  const CpfgRun r = run_cpfg("kept", "Lsystem: 1\nderivation length: 1\nAxiom: A(3)A(0)\n"
+                                     "A(n) : * {i=0; while (i<n) {x=n; i=i+1;}} --> B(x)\nendlsystem\n");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.string, "B(3)B(3)");
+}
+
 TEST(CpfgDialect, UnknownNameInASuccessorReadsZero) {
   const CpfgRun r = run_cpfg("unknown", "Lsystem: 1\nderivation length: 2\nAxiom: A(1)\nA(x) --> A(y+1)\nendlsystem\n");
   ASSERT_EQ(r.exit_code, 0) << r.err;
