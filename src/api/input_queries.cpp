@@ -41,19 +41,20 @@ struct InputAnswers::Evaluators {
 };
 
 InputAnswers::InputAnswers(io::InputFiles& files)
-    : files_(files), curves_(std::max(files.contours.size(), files.curves.size())) {}
+    : files_(files),
+      functions_(files.functions.size()),
+      // curveScale and kin change contours even where the curve functions read cpfg's curves.
+      curves_(std::max(files.contours.size(), files.curves.size())),
+      cpfg_curves_(files.curves.size()) {
+  for (std::size_t k = 0; k < functions_.size(); ++k) {
+    functions_[k].low = files_.functions[k].low;
+    functions_[k].up = files_.functions[k].up;
+  }
+}
 
 InputAnswers::~InputAnswers() = default;
 
 bool InputAnswers::answer_function(int query, int id, const double* in, double* out) {
-  if (functions_.size() < files_.functions.size()) {
-    const std::size_t from = functions_.size();
-    functions_.resize(files_.functions.size());
-    for (std::size_t k = from; k < functions_.size(); ++k) {
-      functions_[k].low = files_.functions[k].low;
-      functions_[k].up = files_.functions[k].up;
-    }
-  }
   if (id < 1 || id > static_cast<int>(files_.functions.size())) return false;
   const geometry::Function& f = files_.functions[static_cast<std::size_t>(id - 1)];
   Evaluators& e = functions_[static_cast<std::size_t>(id - 1)];
@@ -118,7 +119,6 @@ const std::vector<Vec3>& InputAnswers::curve(int id) {
 }
 
 const geometry::CpfgCurve& InputAnswers::cpfg_curve(int id) {
-  if (cpfg_curves_.empty()) cpfg_curves_.resize(files_.curves.size());
   std::unique_ptr<geometry::CpfgCurve>& curve = cpfg_curves_[static_cast<std::size_t>(id - 1)];
   if (!curve) {
     const geometry::Contour& contour = files_.curves[static_cast<std::size_t>(id - 1)];

@@ -11,10 +11,7 @@ bool is_gillespie_group(const abi::ModelDescriptor& model, int group) {
   return groups && std::find(groups, groups + model.gillespie_group_count, group) != groups + model.gillespie_group_count;
 }
 
-double gillespie_uniform(std::uint64_t& state) {
-  state = (0x5DEECE66DULL * state + 0xB) & ((1ULL << 48) - 1);
-  return std::ldexp(static_cast<double>(state), -48);
-}
+double gillespie_uniform(std::uint64_t& state) { return abi::next_erand48(state); }
 
 double gillespie_time(double chi, double total_propensity) {
   if (!(total_propensity > 0)) return std::numeric_limits<double>::infinity();

@@ -102,7 +102,11 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
 }  // namespace
 
 geometry::Contour read_contour_file(const std::string& path) {
-  WordReader in(path, read_input_file(path, "contour file"));
+  return parse_contour(read_input_file(path, "contour file"), path);
+}
+
+geometry::Contour parse_contour(const std::string& text, const std::string& path) {
+  WordReader in(path, text);
   geometry::Contour contour =
       to_lower(in.peek().text) == "cver" ? read_cuspy(in, stem_of(path)) : read_first_version(in, stem_of(path));
   if (!in.at_end()) in.expected("the end of the contour");

@@ -13,6 +13,8 @@ namespace sylva::io {
 // ("n dim type" then the points). A contour without a name is named after
 // the file.
 geometry::Contour read_contour_file(const std::string& path);
+// The same from the file's text already read; `path` names it.
+geometry::Contour parse_contour(const std::string& text, const std::string& path);
 
 // "contourgalleryver 1 1", "items: n", then n contours in the cuspy format.
 std::vector<geometry::Contour> read_contour_set_file(const std::string& path);

@@ -80,7 +80,7 @@ geometry::Contour read_curve_file(const std::string& path) {
   const std::string text = read_input_file(path, "curve file");
   WordReader in(path, text);
   if (!in.at_end() && to_lower(in.peek().text) == "version:") return read_cpfg_curve(in, stem_of(path));
-  return read_contour_file(path);
+  return parse_contour(text, path);
 }
 
 }  // namespace sylva::io

@@ -46,13 +46,6 @@ void require_turtle_values(const ProgramInvocation& invocation, const std::strin
                        "' to the .e file" + (sent > 0 ? " (it sends " + std::to_string(sent) + " values)" : ""));
 }
 
-std::vector<std::size_t> queries_with_parameters(std::span<const Query> queries) {
-  std::vector<std::size_t> indices;
-  for (std::size_t q = 0; q < queries.size(); ++q)
-    if (!queries[q].module.parameters.empty()) indices.push_back(q);
-  return indices;
-}
-
 const std::array<float, 3>& turtle_position(const Query& query, const std::string& program) {
   if (query.turtle.position_count == 0)
     throw std::runtime_error(program + ": the turtle position is needed; add 'turtle position: %g %g %g' to the .e file");

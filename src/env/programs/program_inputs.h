@@ -42,10 +42,6 @@ inline void require_turtle_position(const ProgramInvocation& invocation, const s
   require_turtle_values(invocation, program, "turtle position", query.turtle.position_count, three_d ? 3 : 2);
 }
 
-// The indices of the queries whose module has parameters: the objects of
-// the collision programs (modules without parameters take no part).
-std::vector<std::size_t> queries_with_parameters(std::span<const Query> queries);
-
 // A query's position in 2D (z set to 0) or 3D.
 inline std::array<float, 3> position_in(const Query& query, bool three_d) {
   return {query.turtle.position[0], query.turtle.position[1], three_d ? query.turtle.position[2] : 0.0f};

@@ -100,11 +100,4 @@ SgiImage decode_sgi_image(const std::vector<std::uint8_t>& bytes) {
   return image;
 }
 
-SgiImage read_sgi_image(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the file");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return decode_sgi_image(bytes);
-}
-
 }  // namespace sylva::env

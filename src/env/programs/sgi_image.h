@@ -28,6 +28,5 @@ bool looks_like_sgi_image(const std::vector<std::uint8_t>& bytes);
 
 // Decodes an SGI image; throws std::runtime_error saying what is wrong.
 SgiImage decode_sgi_image(const std::vector<std::uint8_t>& bytes);
-SgiImage read_sgi_image(const std::filesystem::path& path);
 
 }  // namespace sylva::env

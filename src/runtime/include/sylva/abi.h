@@ -161,6 +161,14 @@ struct ControlState {
 // words {0x330E, 0, 0}); ran() and Gillespie steps draw from it until seeded.
 inline constexpr std::uint64_t kLpfgRandomState = 0x330E;
 
+// One step of erand48's 48-bit generator on `state`, and the number in [0,1)
+// it gives: the engine's Gillespie steps and the models' ran() and cpfg's
+// streams all draw with it.
+inline double next_erand48(std::uint64_t& state) {
+  state = (0x5DEECE66DULL * state + 0xB) & ((1ULL << 48) - 1);
+  return static_cast<double>(state) * (1.0 / 281474976710656.0);  // 2^-48
+}
+
 // What ControlState::request is asked (LPFG manual 6.1, 6.4, 6.6).
 enum ModelRequest : int {
   kRequestOutputString = 0,  // file: write the current string now

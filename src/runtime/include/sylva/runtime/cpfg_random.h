@@ -9,15 +9,14 @@
 #include <cmath>
 #include <cstdint>
 
+#include "sylva/abi.h"
+
 namespace sylva::rt::cpfg {
 
 // One erand48 state, xsubi[2] << 32 | xsubi[1] << 16 | xsubi[0].
 struct Stream {
   std::uint64_t x = 0x330E;
-  double next() {
-    x = (0x5DEECE66DULL * x + 0xB) & ((1ULL << 48) - 1);
-    return std::ldexp(static_cast<double>(x), -48);
-  }
+  double next() { return ::sylva::abi::next_erand48(x); }
   // {0x330E, s & 0xFFFF, (s >> 16) & 0xFFFF}, as srand() and a homomorphism's seed set it.
   static std::uint64_t seeded(long s) {
     const std::uint64_t u = static_cast<std::uint64_t>(s);

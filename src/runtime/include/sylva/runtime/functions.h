@@ -84,10 +84,7 @@ inline bool IgnoreEnvironment() { return !sylva::rt::control.environment; }
 
 namespace sylva::rt {
 // One step of the 48-bit generator of erand48 (and drand48) on `state`.
-inline double next_rand48(std::uint64_t& state) {
-  state = (0x5DEECE66DULL * state + 0xB) & ((1ULL << 48) - 1);
-  return std::ldexp(static_cast<double>(state), -48);
-}
+inline double next_rand48(std::uint64_t& state) { return abi::next_erand48(state); }
 inline double next_rand48() { return next_rand48(control.rand48); }
 // lpfg seeds its generators with the seed's low 32 bits as the state's
 // low 32 bits (the state's words {seed, seed >> 16, 0}), not as srand48 does.
