@@ -93,9 +93,9 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-std::size_t count_modules(sylva::derive::Derivation& d) { return d.string().count_modules(d.types()); }
+std::size_t count_modules(const sylva::Simulation& d) { return d.string().count_modules(d.types()); }
 
-void set_string_counters(benchmark::State& state, sylva::derive::Derivation& d) {
+void set_string_counters(benchmark::State& state, const sylva::Simulation& d) {
   const std::size_t modules = count_modules(d);
   state.counters["modules"] = static_cast<double>(modules);
   state.counters["B/module"] = static_cast<double>(d.string().size_bytes()) / static_cast<double>(modules);
@@ -114,7 +114,8 @@ void derive(benchmark::State& state, const std::string& model, int steps, bool f
       simulation.reset();
       simulation = std::make_unique<sylva::Simulation>(model_path(model), warm_options());
     }
-    sylva::derive::Derivation& d = simulation->derivation();
+    sylva::Simulation& d = *simulation;
+    d.rewind();
     d.begin();
     double iteration_seconds = 0;
     for (int k = 0; k < steps; ++k) {
@@ -135,7 +136,7 @@ void derive(benchmark::State& state, const std::string& model, int steps, bool f
     total_seconds += iteration_seconds;
     state.SetIterationTime(iteration_seconds);
   }
-  sylva::derive::Derivation& d = simulation->derivation();
+  const sylva::Simulation& d = *simulation;
   state.counters["Mmod/s"] = total_modules / total_seconds / 1e6;
   state.counters["Mmod/s_last"] = last_modules / last_seconds / 1e6;
   state.counters["Mmod/s_cpu"] = total_modules / total_cpu / 1e6;
@@ -147,8 +148,7 @@ void derive(benchmark::State& state, const std::string& model, int steps, bool f
 constexpr int kDiffusionGrowthSteps = 21;  // GROWTH_STEPS in diffusion.l
 
 void diffusion_step(benchmark::State& state) {
-  sylva::Simulation simulation(model_path("diffusion"), warm_options());
-  sylva::derive::Derivation& d = simulation.derivation();
+  sylva::Simulation d(model_path("diffusion"), warm_options());
   d.begin();
   for (int k = 0; k < kDiffusionGrowthSteps; ++k) d.step();
   const double modules = static_cast<double>(count_modules(d));
@@ -172,9 +172,9 @@ void diffusion_step(benchmark::State& state) {
 // ---- string size ---------------------------------------------------------------
 
 void bytes_per_module(benchmark::State& state, const std::string& model) {
-  sylva::Simulation simulation(model_path(model), warm_options());
-  sylva::derive::Derivation& d = simulation.derivation();
+  sylva::Simulation d(model_path(model), warm_options());
   for (auto _ : state) {
+    d.rewind();
     d.run(8);
     benchmark::DoNotOptimize(d.string().data());
   }
@@ -197,7 +197,7 @@ void first_run(benchmark::State& state, const std::string& model, int steps) {
     const Clock::time_point start = Clock::now();
     sylva::Simulation simulation(model_path(model), options);
     const double built = seconds_since(start);
-    simulation.derivation().run(steps);
+    simulation.run(steps);
     const double total = seconds_since(start);
     cpu_seconds += thread_cpu_seconds() + children_cpu_seconds() - cpu_start;
     state.SetIterationTime(total);

@@ -27,7 +27,7 @@ std::unique_ptr<sylva::Simulation> derived_plant() {
   options.input_files = {std::string(SYLVA_BENCH_MODELS_DIR) + "/plant_1m.v"};
   auto simulation =
       std::make_unique<sylva::Simulation>(std::string(SYLVA_BENCH_MODELS_DIR) + "/plant_1m.l", options);
-  simulation->derivation().run();
+  simulation->run();
   return simulation;
 }
 
@@ -39,11 +39,18 @@ double peak_rss_mb() {
 
 void interpret(benchmark::State& state, bool scene) {
   auto simulation = derived_plant();
-  sylva::derive::Derivation& d = simulation->derivation();
-  const double modules = static_cast<double>(d.string().count_modules(d.types()));
+  const double modules = static_cast<double>(simulation->string().count_modules(simulation->types()));
+  // The query pass's walk: the string as it stands, no scene kept.
+  const sylva::ModuleString interpreted = simulation->interpreted(0);
   for (auto _ : state) {
-    if (scene) benchmark::DoNotOptimize(simulation->scene());
-    else sylva::turtle::fill_query_modules(d, simulation->turtle_settings());
+    if (scene) {
+      benchmark::DoNotOptimize(simulation->scene());
+    } else {
+      sylva::derive::ParameterWrites answers;
+      sylva::turtle::walk_string(interpreted, simulation->types(), simulation->turtle_settings(), nullptr, nullptr,
+                                 &answers);
+      benchmark::DoNotOptimize(answers);
+    }
   }
   state.counters["Mmod/s"] = benchmark::Counter(modules / 1e6, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["modules"] = modules;

@@ -30,8 +30,8 @@ std::string derive_string(const std::string& model, int steps) {
   build::BuildOptions options;
   options.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(model, options);
-  simulation.derivation().run(steps);
-  std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+  simulation.run(steps);
+  std::string text = io::format_string(simulation.string(), simulation.types());
   if (!text.empty() && text.back() == '\n') text.pop_back();
   return text;
 }

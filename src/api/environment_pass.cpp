@@ -1,5 +1,6 @@
 #include "api/environment_pass.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -105,7 +106,7 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
                  const ModuleTypes& types)
       : pass_(pass), spec_(spec), types_(types), turtle_(settings, types, nullptr) {}
 
-  void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) override {
+  void visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string) override {
     const int count = pass_.parameter_count(id);
     if (count >= 0) note(id, params, count, source_index, in_string);
     turtle_.visit(id, params, source_index, in_string);
@@ -115,14 +116,15 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
 
   struct Target {
     ModuleId id;
-    unsigned char* params;  // in the string; null for a module a rule produced
+    const unsigned char* params;  // in the string; null for a module a rule produced
+    std::uint32_t index;          // in the string
     int count;
   };
   std::vector<env::Query> queries;
   std::vector<Target> targets;
 
  private:
-  void note(ModuleId id, unsigned char* params, int count, std::uint32_t place, bool in_string) {
+  void note(ModuleId id, const unsigned char* params, int count, std::uint32_t place, bool in_string) {
     env::Query q;
     q.id = place;
     q.module.symbol = types_.name(id);
@@ -130,7 +132,7 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
     std::memcpy(q.module.parameters.data(), params, sizeof(float) * static_cast<std::size_t>(count));
     q.turtle = turtle_state();
     queries.push_back(std::move(q));
-    targets.push_back(Target{id, in_string ? params : nullptr, count});
+    targets.push_back(Target{id, in_string ? params : nullptr, place, count});
   }
 
   env::TurtleState turtle_state() const {
@@ -187,7 +189,7 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
   const ModuleTypes& types = derivation.types();
   const StringView view = derivation.string().view(types);
   QueryCollector collector(*this, spec_, settings, types);
-  derivation.interpret(collector);
+  derivation.interpret(0, collector);
   collector.finish();
 
   if (spec_.following_module) {
@@ -211,19 +213,22 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
   field.answer(collector.queries, answers, step);
 
   int answered = 0;
+  derive::ParameterWrites writes;
   for (std::size_t k = 0; k < answers.size(); ++k) {
     const auto& target = collector.targets[k];
     const env::Answer& answer = answers[k];
     check_answer(collector.queries[k], answer, step);
-    if (!target.params) continue;  // produced by an interpretation rule: nowhere to write
+    if (!target.params || !answer.set.any()) continue;  // produced by an interpretation rule: nowhere to write
+    ++answered;
+    float values[env::kMaxParameters];
+    std::memcpy(values, target.params, sizeof(float) * static_cast<std::size_t>(target.count));
     // lpfg zeroes an EA20 when an answer for it arrives (-cleanEA20).
-    if (clean_ea20_ && target.id == ea20_ && answer.set.any())
-      std::memset(target.params, 0, sizeof(float) * env::kMaxParameters);
-    if (answer.set.any()) ++answered;
+    if (clean_ea20_ && target.id == ea20_) std::fill(values, values + target.count, 0.0f);
     for (int i = 0; i < target.count; ++i)
-      if (answer.set.test(static_cast<std::size_t>(i)))
-        std::memcpy(target.params + sizeof(float) * static_cast<std::size_t>(i), &answer.value[i], sizeof(float));
+      if (answer.set.test(static_cast<std::size_t>(i))) values[i] = answer.value[i];
+    writes.set_floats(target.index, 0, values, target.count);
   }
+  derivation.write_parameters(writes);
   if (spec_.verbose && verbose_)
     verbose_("environment: pass before step " + std::to_string(step + 1) + ": " +
              std::to_string(collector.queries.size()) +

@@ -116,8 +116,7 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
   std::filesystem::create_directories(dir, ec);
   if (ec) throw ModelError(SourceLocation{dir, 0, 0}, "cannot create the frames folder: " + ec.message());
 
-  derive::Derivation& d = simulation.derivation();
-  const int length = steps >= 0 ? steps : d.derivation_length();
+  const int length = steps >= 0 ? steps : simulation.derivation_length();
   const io::AnimationFile animation = simulation.inputs().animation.value_or(io::AnimationFile{});
   std::vector<int> frames = animation.frames(length);
   if (frames.empty()) return 0;
@@ -129,19 +128,22 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
   auto choose_view = [&] { view = view_or_default(simulation).view(simulation.primary_view()); };
   if (!animation.scale_between_frames && !animation.new_view_between_frames) {
     // A first pass finds where the plant ends up, so the camera stays still.
-    d.begin();
+    simulation.rewind();
+    simulation.begin();
     choose_view();
     if (!view.box) {
-      for (int k = 0; k < frames.back() && !d.stop_requested(); ++k) d.step();
+      while (simulation.step_number() < frames.back() && simulation.step()) {
+      }
       geometry::Box bounds = simulation.scene().bounds();
       if (!bounds.empty()) view.box = bounds;
     }
-    d.finish();
+    simulation.finish();
   }
   const geometry::ViewParameters camera = view;
 
   int written = 0;
-  d.begin();
+  simulation.rewind();
+  simulation.begin();
   if (animation.scale_between_frames || animation.new_view_between_frames) choose_view();
   else view = camera;
   // The frame of step `done`: a listed one, or on request the first, the
@@ -151,20 +153,19 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
     if (on_request) return done == frames.front() || done == frames.back() || (asked && done >= frames.front());
     return listed.count(done) > 0;
   };
-  int done = 0;
   while (true) {
-    const bool last = done >= frames.back() || d.stop_requested();
-    if (frame_wanted(done) || (last && d.stop_requested())) {
+    const int done = simulation.step_number();
+    const bool last = done >= frames.back() || simulation.stopped();
+    if (frame_wanted(done) || (last && simulation.stopped())) {
       char name[32];
       std::snprintf(name, sizeof name, "frame-%04d.png", done);
       write_image((std::filesystem::path(dir) / name).string(), simulation.scene(), simulation, view, options);
       ++written;
     }
     if (last) break;
-    d.step();
-    ++done;
+    simulation.step();
   }
-  d.finish();
+  simulation.finish();
   return written;
 }
 

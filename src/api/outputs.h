@@ -9,11 +9,6 @@
 
 namespace sylva {
 
-struct OutputOptions {
-  int width = 800;   // images and drawings, in pixels
-  int height = 800;
-};
-
 // Throws ModelError naming `path` if its extension is not an output format.
 void check_output_path(const std::string& path);
 

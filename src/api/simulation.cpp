@@ -1,27 +1,30 @@
 #include "api/simulation.h"
 
+#include <algorithm>
+#include <chrono>
+#include <map>
 #include <cstdio>
 
 #include "api/environment_pass.h"
 #include "api/input_queries.h"
 #include "api/model_requests.h"
+#include "api/outputs.h"
 #include "api/views.h"
-#include "turtle/cpfg_symbols.h"
-#include "turtle/interpreter.h"
+#include "build/model_library.h"
+#include "derive/derivation.h"
 #include "env/environment.h"
 #include "io/input_text.h"
+#include "io/output_file.h"
+#include "io/string_reader.h"
+#include "io/string_text.h"
 #include "lang/translator.h"
 #include "support/diagnostic.h"
 #include "support/repeated_warnings.h"
+#include "turtle/cpfg_symbols.h"
+#include "turtle/interpreter.h"
 
 namespace sylva {
 namespace {
-
-// A message for the user: to the sink, or to standard error without one.
-void tell(const derive::Derivation::MessageSink& messages, const std::string& text) {
-  if (messages) messages(text);
-  else std::fputs(text.c_str(), stderr);
-}
 
 // A model's view file is read as its program reads it: a cpfg model's as
 // cpfg does, an L+C model's as lpfg does.
@@ -36,10 +39,58 @@ io::ViewDialect view_dialect(const std::string& model_path, const std::string& l
   }
 }
 
+std::string file_name(const std::string& file, const char* function, const std::string& model_path) {
+  if (file.empty())
+    throw ModelError(SourceLocation{model_path, 0, 0},
+                     std::string(function) + " needs a file name, and was given none");
+  return file;
+}
+
 }  // namespace
 
-void Simulation::start_environment(const EnvironmentOptions& options, const std::vector<io::InputFile>& input_files,
-                                   const derive::Derivation::MessageSink& messages) {
+// ---- opening a model -----------------------------------------------------------
+
+Simulation::Simulation(const std::string& model_path, const SimulationOptions& options, MessageSink user_messages)
+    : model_path_(model_path) {
+  warnings_ = std::make_shared<RepeatedWarnings>(
+      user_messages ? std::move(user_messages) : [](const std::string& text) { std::fputs(text.c_str(), stderr); });
+  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(
+      options.input_files, options.build.compiler, view_dialect(model_path, options.build.language)));
+  for (const std::string& warning : inputs_->warnings) tell(warning + "\n");
+  turtle_settings_ = inputs_->turtle_settings();
+
+  build::BuildOptions build = options.build;
+  for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
+  for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
+  build::BuiltModel built = build::build_model(model_path, build);
+  for (const std::string& warning : built.warnings) tell(warning + "\n");
+  compiled_now_ = built.compiled_now;
+  library_ = std::make_unique<build::ModelLibrary>(built.library_path);
+
+  abi::ControlState& control = *library_->descriptor().control;
+  answers_ = std::make_unique<InputAnswers>(*inputs_);
+  control.inputs = answers_.get();
+  control.input_query = &answer_input_query;
+  control.cpfg_window_seeding = options.cpfg_window_seeding;
+  requests_ = std::make_unique<ModelRequestQueue>();
+  control.requests = requests_.get();
+  control.request = &ModelRequestQueue::receive;
+  derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(),
+                                                     [this](const std::string& text) { tell(text); });
+  if (derivation_->types().cpfg()) {
+    // A cpfg model's turtle symbols, looked up once for every interpretation;
+    // its query symbols (?P ...) are module types of the model's own.
+    auto symbols = std::make_shared<const turtle::CpfgSymbols>(derivation_->types());
+    derivation_->add_query_modules(symbols->query_modules());
+    turtle_settings_.cpfg_symbols = std::move(symbols);
+  }
+  start_environment(options.environment, options.input_files);
+}
+
+Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options, MessageSink messages)
+    : Simulation(model_path, SimulationOptions{options, {}}, std::move(messages)) {}
+
+void Simulation::start_environment(const EnvironmentOptions& options, const std::vector<io::InputFile>& input_files) {
   std::string comm_file = options.comm_file;
   for (const io::InputFile& file : input_files) {
     if (file.kind != io::InputKind::Environment) continue;
@@ -51,70 +102,17 @@ void Simulation::start_environment(const EnvironmentOptions& options, const std:
   }
   if (comm_file.empty() && !options.field) return;
   env::CommSpec spec = comm_file.empty() ? env::CommSpec::everything() : env::read_comm_spec(comm_file);
-  for (const std::string& warning : spec.warnings) tell(messages, warning + "\n");
-  auto verbose = [messages](const std::string& text) { tell(messages, text); };
+  for (const std::string& warning : spec.warnings) tell(warning + "\n");
+  auto tell_this = [this](const std::string& text) { tell(text); };
   // Made first: a model the environment cannot serve fails before a program is started.
-  environment_pass_ = std::make_unique<EnvironmentPass>(spec, derivation_->types(), options.clean_ea20, model_path_,
-                                                        std::move(verbose));
+  environment_pass_ =
+      std::make_unique<EnvironmentPass>(spec, derivation_->types(), options.clean_ea20, model_path_, tell_this);
   env::FieldOptions field_options;
   field_options.timeout_seconds = options.timeout_seconds;
   field_options.master = derivation_->types().cpfg() ? env::ModelingProgram::cpfg : env::ModelingProgram::lpfg;
-  field_options.warn = [messages](const std::string& text) { tell(messages, text); };
+  field_options.warn = tell_this;
   field_ = options.field ? options.field : std::shared_ptr<env::Field>(env::make_field(spec, field_options));
-  derivation_->set_environment_pass(
-      [this](derive::Derivation& d) { environment_pass_->run(d, turtle_settings_, *field_); });
 }
-
-Simulation::Simulation(const std::string& model_path, const SimulationOptions& options,
-                       derive::Derivation::MessageSink user_messages)
-    : model_path_(model_path) {
-  warnings_ = std::make_shared<RepeatedWarnings>(
-      user_messages ? std::move(user_messages) : [](const std::string& text) { std::fputs(text.c_str(), stderr); });
-  derive::Derivation::MessageSink messages = [warnings = warnings_](const std::string& text) { (*warnings)(text); };
-  inputs_ = std::make_unique<io::InputFiles>(io::read_input_files(
-      options.input_files, options.build.compiler, view_dialect(model_path, options.build.language)));
-  for (const std::string& warning : inputs_->warnings) tell(messages, warning + "\n");
-  turtle_settings_ = inputs_->turtle_settings();
-
-  build::BuildOptions build = options.build;
-  for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
-  for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
-  build::BuiltModel built = build::build_model(model_path, build);
-  for (const std::string& warning : built.warnings) tell(messages, warning + "\n");
-  compiled_now_ = built.compiled_now;
-  library_ = std::make_unique<build::ModelLibrary>(built.library_path);
-
-  abi::ControlState& control = *library_->descriptor().control;
-  answers_ = std::make_unique<InputAnswers>(*inputs_);
-  control.inputs = answers_.get();
-  control.input_query = &answer_input_query;
-  control.cpfg_window_seeding = options.cpfg_window_seeding;
-  const derive::Derivation::MessageSink environment_messages = messages;
-  derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(), std::move(messages));
-  if (derivation_->types().cpfg()) {
-    // A cpfg model's turtle symbols, looked up once for every interpretation;
-    // its query symbols (?P ...) are module types of the model's own.
-    auto symbols = std::make_shared<const turtle::CpfgSymbols>(derivation_->types());
-    derivation_->add_query_modules(symbols->query_modules());
-    turtle_settings_.cpfg_symbols = std::move(symbols);
-  }
-  requests_ = std::make_unique<ModelRequests>(*this);
-  control.requests = requests_.get();
-  control.request = &ModelRequests::handle;
-  derivation_->set_phase_hook(
-      [this](derive::Derivation::Phase phase, bool stopped) {
-        // A run starts from the curves as read, whatever the last run did to them.
-        if (phase == derive::Derivation::Phase::Starting) answers_->restore_curves();
-        requests_->on_phase(phase, stopped);
-      });
-  derivation_->set_query_pass(
-      [this](derive::Derivation& d) { turtle::fill_query_modules(d, turtle_settings_); });
-  start_environment(options.environment, options.input_files, environment_messages);
-}
-
-Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options,
-                       derive::Derivation::MessageSink messages)
-    : Simulation(model_path, SimulationOptions{options, {}}, std::move(messages)) {}
 
 Simulation::~Simulation() {
   warnings_->finish();
@@ -134,19 +132,182 @@ Simulation::~Simulation() {
   }
 }
 
-geometry::Scene Simulation::scene(std::string* trace) { return scene(primary_view(), trace); }
+void Simulation::tell(const std::string& text) {
+  if (RepeatedWarnings::is_warning(text) &&
+      std::find(warnings_told_.begin(), warnings_told_.end(), text) == warnings_told_.end())
+    warnings_told_.push_back(text);
+  (*warnings_)(text);
+}
 
-geometry::Scene Simulation::scene(int view, std::string* trace) {
-  derivation_->set_view(view);
-  geometry::Scene result = turtle::interpret_scene(*derivation_, turtle_settings_, trace);
-  derivation_->set_view(0);  // the query pass uses view 0's rules (LPFG manual 5.12)
+// ---- the run -------------------------------------------------------------------
+
+void Simulation::begin() {
+  if (begun_) return;
+  begun_ = true;
+  finished_ = false;
+  step_seconds_.clear();
+  views_.clear();
+  pending_frames_.clear();
+  display_requested_ = false;
+  requests_->clear();
+  answers_->restore_curves();  // a run starts from the curves as read, whatever the last run did to them
+  derivation_->start();
+  act_on_requests(RequestSource::ControlStatement);  // LoadString in Start replaces the axiom
+  derivation_->make_axiom();
+  if (derivation_->uses_query_modules()) fill_query_modules();
+  write_requested_frames(derivation_->stop_requested());
+}
+
+bool Simulation::step() {
+  begin();
+  if (finished_ || derivation_->stop_requested()) return false;
+  const auto started = std::chrono::steady_clock::now();
+  // lpfg's Derive and cpfg's Derive both begin with the environmental pass,
+  // before StartEach: a run of n steps has n passes, the last one before the
+  // last step, so the final string holds what that step produced.
+  if (environment_pass_ && derivation_->environment_enabled())
+    environment_pass_->run(*derivation_, turtle_settings_, *field_);
+  act_on_requests(RequestSource::Rules);  // from interpretation rules the pass ran
+  derivation_->start_each();
+  act_on_requests(RequestSource::ControlStatement);
+  derivation_->apply_productions();
+  act_on_requests(RequestSource::Rules);
+  if (derivation_->uses_query_modules()) fill_query_modules();
+  derivation_->end_each();
+  act_on_requests(RequestSource::ControlStatement);
+  // Stop() in the same step: lpfg outputs no frame.
+  write_requested_frames(derivation_->stop_requested());
+  step_seconds_.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  return true;
+}
+
+void Simulation::finish() {
+  if (!begun_ || finished_) return;
+  const bool stopped_before = derivation_->stop_requested();
+  derivation_->end();
+  finished_ = true;
+  act_on_requests(RequestSource::ControlStatement);
+  write_requested_frames(!stopped_before && derivation_->stop_requested());
+}
+
+void Simulation::run(int steps) {
+  const int target = steps >= 0 ? steps : derivation_length();
+  if (finished_ && (step_number() == target || stopped())) return;
+  if (finished_ || step_number() > target) rewind();
+  begin();
+  while (step_number() < target && step()) {
+  }
+  finish();
+}
+
+void Simulation::rewind() {
+  begun_ = false;
+  finished_ = false;
+}
+
+void Simulation::start_from(const ModuleString& string) { derivation_->set_initial_string(string); }
+
+// The query pass: the turtle's state written into the string's query
+// modules (GetPos ..., cpfg's ?P ...), as view 0 draws it (LPFG manual 5.12).
+void Simulation::fill_query_modules() {
+  derivation_->write_parameters(turtle::query_answers(*derivation_, turtle_settings_));
+  act_on_requests(RequestSource::Rules);
+}
+
+bool Simulation::fills_query_modules() const { return derivation_->uses_query_modules(); }
+bool Simulation::stopped() const { return derivation_->stop_requested(); }
+int Simulation::step_number() const { return derivation_->steps_done(); }
+int Simulation::derivation_length() const { return derivation_->derivation_length(); }
+
+// ---- what the model asks for ------------------------------------------------------
+
+void Simulation::act_on_requests(RequestSource source) {
+  for (const ModelRequest& r : requests_->take()) act_on_request(r.kind, r.value, r.file, source);
+}
+
+void Simulation::act_on_request(int request, int value, const std::string& file, RequestSource source) {
+  switch (request) {
+    case abi::kRequestOutputString:
+      io::write_output_file(file_name(file, "OutputString", model_path_), string_text());
+      break;
+    case abi::kRequestLoadString:
+      if (source == RequestSource::Rules)
+        throw ModelError(SourceLocation{model_path_, 0, 0},
+                         "LoadString may only be called in a control statement (Start, StartEach, EndEach, End), "
+                         "not while rules are applied");
+      derivation_->replace_string(io::read_string_file(file_name(file, "LoadString", model_path_), types()));
+      break;
+    case abi::kRequestOutputFrame: {
+      std::string path = file_name(file, "OutputFrame", model_path_);
+      check_output_path(path);
+      pending_frames_.push_back(std::move(path));
+      break;
+    }
+    case abi::kRequestDisplayFrame:
+      display_requested_ = true;
+      break;
+    case abi::kRequestUseView:
+      check_view(value, *inputs_, model_path_);
+      if (std::find(views_.begin(), views_.end(), value) == views_.end()) {
+        views_.push_back(value);
+        std::sort(views_.begin(), views_.end());
+      }
+      break;
+    default:
+      break;
+  }
+}
+
+void Simulation::write_requested_frames(bool stopped) {
+  std::vector<std::string> frames;
+  frames.swap(pending_frames_);
+  if (!stopped) write(frames);
+}
+
+bool Simulation::take_display_request() {
+  const bool requested = display_requested_;
+  display_requested_ = false;
+  return requested;
+}
+
+// ---- what the string is ------------------------------------------------------------
+
+const ModuleString& Simulation::string() const { return derivation_->string(); }
+
+std::string Simulation::string_text() const { return io::format_string(derivation_->string(), types()); }
+
+ModuleString Simulation::interpreted(int view) {
+  ModuleString result = derivation_->interpreted(view);
+  act_on_requests(RequestSource::Rules);
   return result;
 }
 
-const std::vector<int>& Simulation::views() const { return requests_->views(); }
+std::string Simulation::interpreted_text(int view) { return io::format_string(interpreted(view), types()); }
 
-void Simulation::set_output_options(const OutputOptions& options) { requests_->options = options; }
+geometry::Scene Simulation::scene(int view) {
+  geometry::Scene drawn = turtle::interpret_scene(*derivation_, view, turtle_settings_);
+  act_on_requests(RequestSource::Rules);
+  return drawn;
+}
 
-bool Simulation::take_display_request() { return requests_->take_display_request(); }
+std::string Simulation::turtle_trace(int view) {
+  std::string trace;
+  turtle::interpret_scene(*derivation_, view, turtle_settings_, &trace);
+  act_on_requests(RequestSource::Rules);
+  return trace;
+}
+
+void Simulation::write(const std::vector<std::string>& paths) {
+  std::map<int, geometry::Scene> scenes;  // by view
+  for (const std::string& path : paths)
+    for (const ViewOutput& out : view_outputs(path, *this, output_options_)) {
+      auto drawn = scenes.find(out.view);
+      if (drawn == scenes.end()) drawn = scenes.emplace(out.view, scene(out.view)).first;
+      write_output(out.path, drawn->second, *this, out.size, out.view);
+    }
+}
+
+const ModuleTypes& Simulation::types() const { return derivation_->types(); }
+const abi::ModelDescriptor& Simulation::descriptor() const { return library_->descriptor(); }
 
 }  // namespace sylva

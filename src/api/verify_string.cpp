@@ -12,7 +12,7 @@ StringVerification verify_string(Simulation& simulation) {
   const ModuleTypes& types = simulation.types();
   const std::vector<ModuleId> expected(model.verify_string, model.verify_string + model.verify_length);
   std::vector<ModuleId> actual;
-  const ModuleString& string = simulation.derivation().string();
+  const ModuleString& string = simulation.string();
   const StringView v = string.view(types);
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) actual.push_back(v.id_at(at));
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "support/diagnostic.h"
+
 namespace sylva {
 namespace {
 
@@ -49,6 +51,22 @@ std::vector<std::string> view_name_defines(const io::InputFiles& inputs) {
   for (std::size_t k = 0; k < inputs.view->windows.size(); ++k)
     defines.push_back(inputs.view->windows[k].name + "=" + std::to_string(window_view(k)));
   return defines;
+}
+
+void check_view(int view, const io::InputFiles& inputs, const std::string& model_path) {
+  const auto& view_file = inputs.view;
+  const std::size_t windows = view_file ? view_file->windows.size() : 0;
+  if (view >= window_view(0) && view < window_view(windows)) return;
+  std::string defined;
+  if (!view_file)
+    defined = "there is no view file, so no window: commands";
+  else if (windows == 0)
+    defined = "the view file defines no windows";
+  else
+    defined = "the view file defines " + std::to_string(windows) + " window" + (windows == 1 ? "" : "s") +
+              ", views " + std::to_string(window_view(0)) +
+              (windows == 1 ? std::string() : " to " + std::to_string(window_view(windows - 1)));
+  throw ModelError(SourceLocation{model_path, 0, 0}, "UseView(" + std::to_string(view) + "): no such view; " + defined);
 }
 
 }  // namespace sylva

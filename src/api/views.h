@@ -30,6 +30,10 @@ constexpr int window_view(std::size_t index) { return static_cast<int>(index) + 
 std::vector<ViewOutput> view_outputs(const std::string& path, const Simulation& simulation,
                                      const OutputOptions& options);
 
+// Throws ModelError (at `model_path`) unless `view` is a window: of the view
+// file: UseView of any other number would draw a full-size image of no window.
+void check_view(int view, const io::InputFiles& inputs, const std::string& model_path);
+
 // "-D name=id" for every window: of the view file (ids from 1 in order), so
 // models can write UseView(name) and vgroup name:.
 std::vector<std::string> view_name_defines(const io::InputFiles& inputs);

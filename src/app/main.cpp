@@ -13,11 +13,9 @@
 #include "api/reference_command_line.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
-#include "api/views.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
 #include "io/string_reader.h"
-#include "io/string_text.h"
 #include "support/diagnostic.h"
 
 namespace {
@@ -86,44 +84,27 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   options.cpfg_window_seeding = r.cpfg_window_seeding;
   sylva::Simulation simulation(r.model, options);
   simulation.set_output_options(r.output);
-  sylva::derive::Derivation& d = simulation.derivation();
-  if (!r.axiom_from.empty()) d.set_initial_string(sylva::io::read_string_file(r.axiom_from, d.types()));
-  bool derived = false;
+  if (!r.axiom_from.empty())
+    simulation.start_from(sylva::io::read_string_file(r.axiom_from, simulation.types()));
   if (!r.frames_dir.empty()) {
-    int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
+    const int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
     if (o.build.verbose) std::fprintf(stderr, "sylva: wrote %d frames to %s\n", frames, r.frames_dir.c_str());
-    // Frames that ended on the final step leave the final string in place.
-    const int steps = r.steps >= 0 ? r.steps : d.derivation_length();
-    derived = d.steps_done() == steps || d.stop_requested();
   }
-  if (!derived) d.run(r.steps);
+  simulation.run(r.steps);  // frames that ended on the final step leave it in place
   if (!check_verify_string(simulation, r.model)) return 1;
-  if (!r.interpreted_path.empty()) {
-    d.set_view(simulation.primary_view());  // as the first view draws it
-    sylva::io::write_output_file(r.interpreted_path, sylva::io::format_string(d.interpreted(), d.types()));
-    d.set_view(0);
-  }
-  if (!r.turtle_path.empty() || !r.outputs.empty()) {
-    // One interpretation serves the turtle's trace and every output file.
-    std::string trace;
-    const sylva::geometry::Scene scene = simulation.scene(r.turtle_path.empty() ? nullptr : &trace);
-    if (!r.turtle_path.empty()) sylva::io::write_output_file(r.turtle_path, trace);
-    for (const std::string& path : r.outputs)
-      for (const sylva::ViewOutput& out : sylva::view_outputs(path, simulation, r.output))
-        sylva::write_output(out.path, out.view == simulation.primary_view() ? scene : simulation.scene(out.view),
-                            simulation, out.size, out.view);
-  }
+  // As the first view draws it.
+  if (!r.interpreted_path.empty())
+    sylva::io::write_output_file(r.interpreted_path, simulation.interpreted_text(simulation.primary_view()));
+  if (!r.turtle_path.empty())
+    sylva::io::write_output_file(r.turtle_path, simulation.turtle_trace(simulation.primary_view()));
+  simulation.write(r.outputs);
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
                             !r.frames_dir.empty();
   if (!r.string_path.empty() || !other_output) {
     const std::string path = r.string_path.empty() ? "-" : r.string_path;
-    if (r.interpreted_string) {  // cpfg's -h: the string after homomorphism
-      d.set_view(simulation.primary_view());
-      sylva::io::write_output_file(path, sylva::io::format_string(d.interpreted(), d.types()));
-      d.set_view(0);
-    } else {
-      sylva::io::write_output_file(path, sylva::io::format_string(d.string(), d.types()));
-    }
+    // cpfg's -h: the string after homomorphism.
+    sylva::io::write_output_file(path, r.interpreted_string ? simulation.interpreted_text(simulation.primary_view())
+                                                            : simulation.string_text());
   }
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
@@ -139,7 +140,7 @@ int Derivation::derivation_length() const {
 
 // ---- control flow ------------------------------------------------------------
 
-void Derivation::begin() {
+void Derivation::start() {
   abi::ControlState& c = control();
   c.forward = true;
   c.stop_requested = false;
@@ -149,30 +150,24 @@ void Derivation::begin() {
   c.gillespie_time = 0;
   c.environment = true;
   steps_done_ = 0;
-  phase(Phase::Starting, false);
   string_.clear();
   loaded_in_start_ = false;
-  in_start_ = true;
+  axiom_pending_ = true;
   if (model_.start) model_.start();
-  in_start_ = false;
-  ring_ = model_.ring && model_.ring() != 0;
-  if (loaded_in_start_) {
-    // LoadString in Start: that string, not the axiom.
-  } else if (initial_string_) {
-    string_.assign(initial_string_->data(), initial_string_->size_bytes());
-  } else {
-    if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
-    string_.clear();
-    model_.axiom(string_.buffer());
-    if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
-  }
-  if (uses_query_modules_ && query_pass_) query_pass_(*this);
-  begun_ = true;
-  phase(Phase::Started, false);
 }
 
-void Derivation::phase(Phase p, bool stopped_before) {
-  if (phase_hook_) phase_hook_(p, !stopped_before && control().stop_requested);
+void Derivation::make_axiom() {
+  axiom_pending_ = false;
+  ring_ = model_.ring && model_.ring() != 0;
+  if (loaded_in_start_) return;  // LoadString in Start: that string, not the axiom
+  if (initial_string_) {
+    string_.assign(initial_string_->data(), initial_string_->size_bytes());
+    return;
+  }
+  if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
+  string_.clear();
+  model_.axiom(string_.buffer());
+  if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
 }
 
 void Derivation::set_initial_string(const ModuleString& string) {
@@ -186,21 +181,20 @@ void Derivation::replace_string(ModuleString string) {
                      "LoadString may only be called in a control statement (Start, StartEach, EndEach, End), "
                      "not while rules are applied");
   string_ = std::move(string);
-  if (in_start_) loaded_in_start_ = true;
+  if (axiom_pending_) loaded_in_start_ = true;
 }
 
-void Derivation::step() {
-  if (!begun_) begin();
+void Derivation::start_each() {
   abi::ControlState& c = control();
-  const bool stopped_before = c.stop_requested;
-  // lpfg's Derive and cpfg's Derive both begin with the environmental pass,
-  // before StartEach: a run of n steps has n passes, the last one before the
-  // last step, so the final string holds what that step produced.
-  if (environment_pass_ && c.environment) environment_pass_(*this);
-  // lpfg counts the step after that pass, before StartEach: StepNo() is the
-  // step's number (from 1) in its StartEach, productions and EndEach.
+  // lpfg counts the step after the environmental pass, before StartEach:
+  // StepNo() is the step's number (from 1) in its StartEach, productions and
+  // EndEach.
   c.step = steps_done_ + 1;
   if (model_.start_each) model_.start_each();
+}
+
+void Derivation::apply_productions() {
+  abi::ControlState& c = control();
   const GroupChoice choice = classify_group(model_, c.next_group);
   if (choice != GroupChoice::Defined && warned_groups_.insert(c.next_group).second)
     message(group_warning(model_, c.next_group, choice));
@@ -224,9 +218,10 @@ void Derivation::step() {
   ++steps_done_;
   c.step = steps_done_;
   decompose();
-  if (uses_query_modules_ && query_pass_) query_pass_(*this);
+}
+
+void Derivation::end_each() {
   if (model_.end_each) model_.end_each();
-  phase(Phase::Stepped, stopped_before);
 }
 
 void Derivation::decompose() {
@@ -240,10 +235,8 @@ void Derivation::decompose() {
   std::swap(string_, next_);
 }
 
-void Derivation::finish() {
-  const bool stopped_before = control().stop_requested;
+void Derivation::end() {
   if (model_.end) model_.end();
-  phase(Phase::Finished, stopped_before);
 }
 
 void Derivation::run(int steps) {
@@ -253,25 +246,29 @@ void Derivation::run(int steps) {
   finish();
 }
 
-ModuleString Derivation::interpreted() {
+ModuleString Derivation::interpreted(int view) {
   // The same walk the turtle gets, collected into a string.
   struct Collector : InterpretedModuleVisitor {
     const ModuleTypes& types;
     ModuleString out;
     explicit Collector(const ModuleTypes& t) : types(t) {}
-    void visit(ModuleId id, unsigned char* params, std::uint32_t, bool) override {
+    void visit(ModuleId id, const unsigned char* params, std::uint32_t, bool) override {
       out.append_module(id, params, types[id].param_size);
     }
   } collector(types_);
   collector.out.reserve(string_.size_bytes());
-  interpret(collector);
+  interpret(view, collector);
   return std::move(collector.out);
 }
 
-void Derivation::interpret(InterpretedModuleVisitor& visitor) {
+void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
   PassGuard guard(passes_running_);
+  struct ViewGuard {
+    int& view;
+    ~ViewGuard() { view = 0; }
+  } view_guard{view_};
+  view_ = view;
   const StringView src = current_view();
-  unsigned char* data = const_cast<unsigned char*>(string_.data());
   const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
   const int depth = has_rules && model_.interpretation_depth ? model_.interpretation_depth() : 1;
   if (has_rules) depth_warnings_.clear();
@@ -292,18 +289,41 @@ void Derivation::interpret(InterpretedModuleVisitor& visitor) {
         interpretation_out_.clear();
         expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_);
         const StringView shown = interpretation_out_.view(types_);
-        unsigned char* shown_data = const_cast<unsigned char*>(interpretation_out_.data());
         for (std::size_t at = shown.begin; at < shown.end; at = shown.next(at))
-          visitor.visit(shown.id_at(at), shown_data + at + sizeof(ModuleId), index, false);
+          visitor.visit(shown.id_at(at), module_params(shown.data, at), index, false);
         for (std::size_t at = pos; at < consumed; at = src.next(at)) ++index;
         pos = consumed;
         continue;
       }
     }
-    if (sub_lsystems_) track_lsystem(id, data + pos + sizeof(ModuleId));
-    visitor.visit(id, data + pos + sizeof(ModuleId), index, true);
+    if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
+    visitor.visit(id, module_params(src.data, pos), index, true);
     ++index;
     pos = src.next(pos);
+  }
+}
+
+void Derivation::write_parameters(const ParameterWrites& writes) {
+  if (passes_running_ > 0) throw std::logic_error("parameters written while rules are applied");
+  std::vector<const ParameterWrites::Write*> order;
+  order.reserve(writes.writes().size());
+  for (const ParameterWrites::Write& w : writes.writes()) order.push_back(&w);
+  // Passes give their writes in string order; sorting keeps one walk enough
+  // for any order, and keeps writes to one module in the order given.
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto* a, const auto* b) { return a->module_index < b->module_index; });
+  const StringView view = string_.view(types_);
+  unsigned char* data = string_.data_for_writing();
+  std::uint32_t index = 0;
+  std::size_t pos = view.begin;
+  for (const ParameterWrites::Write* w : order) {
+    for (; index < w->module_index && pos < view.end; ++index) pos = view.next(pos);
+    if (pos >= view.end) throw std::logic_error("a parameter write past the end of the string");
+    const std::size_t offset = sizeof(float) * static_cast<std::size_t>(w->first_float);
+    const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(w->count);
+    if (offset + bytes > types_[view.id_at(pos)].param_size)
+      throw std::logic_error("a parameter write past the module's parameters");
+    std::memcpy(data + pos + sizeof(ModuleId) + offset, writes.values().data() + w->value_offset, bytes);
   }
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "derive/gillespie.h"
+#include "derive/parameter_writes.h"
 #include "derive/rule_index.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
@@ -20,16 +21,20 @@
 namespace sylva::derive {
 
 // Receives the string as the turtle sees it: each module after interpretation
-// rules, with the position of the string module it came from.
+// rules, with the index of the string module it came from.
 class InterpretedModuleVisitor {
  public:
   virtual ~InterpretedModuleVisitor() = default;
   // `in_string` is true when the module is the string's own (not produced by
-  // an interpretation rule): writes to `params` then change the string, which
-  // is how query modules (GetPos ...) receive their values.
-  virtual void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) = 0;
+  // an interpretation rule): answers for it (query modules) can be written
+  // back with Derivation::write_parameters.
+  virtual void visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string) = 0;
 };
 
+// A passive engine: it applies the model's rules and calls its control
+// statements when told to, and calls nothing back. The caller (Simulation)
+// runs the passes that sit between the pieces of a step (the environment,
+// query modules) and acts on what the model asked for in between.
 class Derivation {
  public:
   using MessageSink = std::function<void(const std::string&)>;
@@ -40,12 +45,27 @@ class Derivation {
   Derivation(const Derivation&) = delete;
   Derivation& operator=(const Derivation&) = delete;
 
-  // Start, the axiom and its decomposition.
-  void begin();
-  // One derivation step: StartEach, the step, decomposition, EndEach.
-  void step();
+  // ---- a run, piece by piece, in the order the LPFG manual gives
+  // Start (the control state reset first); the string is emptied.
+  void start();
+  // The axiom and its decomposition; or the string given to
+  // set_initial_string (not decomposed again); or nothing, when Start
+  // loaded a string with replace_string.
+  void make_axiom();
+  // StartEach, after the step number and group are set.
+  void start_each();
+  // The step's productions, then decomposition.
+  void apply_productions();
+  // EndEach.
+  void end_each();
   // End.
-  void finish();
+  void end();
+
+  // The same pieces joined, for a derivation used on its own: query modules
+  // stay unfilled and no environment is asked (Simulation does both).
+  void begin() { start(); make_axiom(); }
+  void step() { start_each(); apply_productions(); end_each(); }
+  void finish() { end(); }
   // begin(), `steps` steps (the model's derivation length if negative) unless
   // the model calls Stop(), finish().
   void run(int steps = -1);
@@ -53,36 +73,34 @@ class Derivation {
   int derivation_length() const;
   int steps_done() const { return steps_done_; }
   bool stop_requested() const { return control().stop_requested; }
+  // The model's Environment() switch: whether the environmental pass runs
+  // before the next step (on at every start(); Start may turn it off).
+  bool environment_enabled() const { return control().environment; }
 
   const ModuleString& string() const { return string_; }
   const ModuleTypes& types() const { return types_; }
-  // The string with interpretation rules applied (what the turtle draws).
-  ModuleString interpreted();
-  // The view (LPFG manual 7.3) whose interpretation rules interpret() and
-  // interpreted() apply: vgroup `view`'s, then those outside any vgroup.
-  void set_view(int view) { view_ = view; }
-  int view() const { return view_; }
+  // The string with view `view`'s interpretation rules applied (what the
+  // turtle draws): vgroup `view`'s (LPFG manual 7.3), then those outside any
+  // vgroup, which alone are view 0's.
+  ModuleString interpreted(int view = 0);
+  // The same, module by module, to a visitor. The string is not changed.
+  void interpret(int view, InterpretedModuleVisitor& visitor);
+  // Writes answers found by a pass over the interpreted string into the
+  // string's modules. Only between derivation passes.
+  void write_parameters(const ParameterWrites& writes);
 
-  // Starts the next begin() from `string` instead of the axiom (a saved
+  // Starts the next start() from `string` instead of the axiom (a saved
   // string: it is not decomposed again).
   void set_initial_string(const ModuleString& string);
   // Replaces the current string (LoadString). Only between derivation
-  // passes: throws ModelError while rules are being applied. Called from
-  // Start, the axiom is not used.
+  // passes: throws ModelError while rules are being applied. After start(),
+  // before make_axiom(), the axiom is not used.
   void replace_string(ModuleString string);
 
-  // Points in a run where the engine acts on the model's requests:
-  // Starting before Start, Started after the axiom, Stepped after each step
-  // (after EndEach), Finished after End. `stopped` says whether Stop() was
-  // called since the previous point.
-  enum class Phase { Starting, Started, Stepped, Finished };
-  void set_phase_hook(std::function<void(Phase, bool stopped)> hook) { phase_hook_ = std::move(hook); }
-  // The same, module by module, to a visitor.
-  void interpret(InterpretedModuleVisitor& visitor);
-
-  // Whether a production's predecessor holds a query module (GetPos, GetHead,
-  // GetLeft, GetUp): then the string is interpreted after the axiom and after
-  // every step, so those modules carry the turtle's state.
+  // Whether query modules (GetPos, GetHead, GetLeft, GetUp, or those named by
+  // add_query_modules) must be filled after the axiom and after every step
+  // (after decomposition, before EndEach): a production's predecessor holds
+  // one.
   bool uses_query_modules() const { return uses_query_modules_; }
   // More module types that the query pass fills, beyond the four predefined
   // ones: the interpreter of a model whose own module types are queries
@@ -90,16 +108,6 @@ class Derivation {
   // need not know them. Any such module makes the query pass run, as cpfg
   // fills them whether or not a production reads them.
   void add_query_modules(const std::vector<ModuleId>& ids);
-  // Called after the axiom and after every step (after decomposition, before
-  // EndEach) when the model uses query modules.
-  void set_query_pass(std::function<void(Derivation&)> pass) { query_pass_ = std::move(pass); }
-  // The environmental pass of open L-systems (communication modules E1, E2,
-  // EA20, cpfg's ?E): called at the start of every step, before StartEach,
-  // while the model's Environment() switch is on (it is at every begin();
-  // Start may turn it off). lpfg and cpfg both run it there (their Derive
-  // starts with it), so the first pass sees the axiom and no pass follows the
-  // last step.
-  void set_environment_pass(std::function<void(Derivation&)> pass) { environment_pass_ = std::move(pass); }
 
  private:
 
@@ -156,20 +164,15 @@ class Derivation {
   std::deque<ModuleString> expansion_scratch_;  // one per decomposition depth
   std::set<std::pair<int, ModuleId>> depth_warnings_;
   int steps_done_ = 0;
-  bool begun_ = false;
   bool ring_ = false;
   bool uses_query_modules_ = false;
   bool sub_lsystems_ = false;
   std::vector<int> lsystems_;
-  std::function<void(Derivation&)> query_pass_;
-  std::function<void(Derivation&)> environment_pass_;
-  std::function<void(Phase, bool)> phase_hook_;
-  void phase(Phase p, bool stopped_before);
-  int view_ = 0;
+  int view_ = 0;             // the view of the interpretation in progress
   bool has_views_ = false;   // some interpretation rule is in a vgroup
   int passes_running_ = 0;   // rules are being applied: the string must stay
-  bool in_start_ = false;
-  bool loaded_in_start_ = false;
+  bool axiom_pending_ = false;    // between start() and make_axiom()
+  bool loaded_in_start_ = false;  // replace_string between start() and make_axiom()
   std::optional<ModuleString> initial_string_;
   ModuleString interpretation_out_;
   ReactionSet reactions_;

@@ -49,6 +49,8 @@ class ModuleString {
   ModuleString& operator=(const ModuleString&) = delete;
 
   const unsigned char* data() const { return buffer_.data; }
+  // For writing parameters in place (answers to query and communication modules).
+  unsigned char* data_for_writing() { return buffer_.data; }
   std::size_t size_bytes() const { return buffer_.size; }
   bool empty() const { return buffer_.size == 0; }
 

@@ -212,12 +212,12 @@ int step_color(int c, bool up) {
 
 }  // namespace
 
-void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 value, bool in_string) {
+void TurtleInterpreter::Impl::query_cpfg(int count, Vec3 value, bool in_string) {
   // ?P(x,y) receives x and y, ?P(x,y,z) all three.
   const int n = std::min(count, 3);
   if (in_string && n > 0) {
     const float xyz[3] = {value.x, value.y, value.z};
-    std::memcpy(params, xyz, sizeof(float) * static_cast<std::size_t>(n));
+    query_answers_.set_floats(from_.module_index, 0, xyz, n);
   }
   if (trace_) {
     *trace_ += in_string ? " = " : " not in the string: ";
@@ -225,7 +225,7 @@ void TurtleInterpreter::Impl::query_cpfg(unsigned char* params, int count, Vec3 
   }
 }
 
-void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uint32_t source_index, bool in_string) {
+void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, const unsigned char* p, std::uint32_t source_index, bool in_string) {
   using O = CpfgOp;
   CpfgOp op = cpfg_->op(id);
   // A command read a character a module: the characters so far and this one.
@@ -469,10 +469,10 @@ void TurtleInterpreter::Impl::visit_cpfg(ModuleId id, unsigned char* p, std::uin
       break;
     }
 
-    case O::QueryPosition: query_cpfg(p, n, state_.position, in_string); break;
-    case O::QueryHeading: query_cpfg(p, n, frame.heading, in_string); break;
-    case O::QueryLeft: query_cpfg(p, n, frame.left, in_string); break;
-    case O::QueryUp: query_cpfg(p, n, -frame.up, in_string); break;  // cpfg's U
+    case O::QueryPosition: query_cpfg(n, state_.position, in_string); break;
+    case O::QueryHeading: query_cpfg(n, frame.heading, in_string); break;
+    case O::QueryLeft: query_cpfg(n, frame.left, in_string); break;
+    case O::QueryUp: query_cpfg(n, -frame.up, in_string); break;  // cpfg's U
 
     // ?(label,s): the sub-L-system's structure is scaled by s (CPFG manual
     // 7.2) until its $.

@@ -237,13 +237,13 @@ void TurtleInterpreter::Impl::pop() {
   }
 }
 
-void TurtleInterpreter::Impl::query(unsigned char* params, Vec3 value, bool in_string) {
-  query_cpfg(params, 3, value, in_string);
+void TurtleInterpreter::Impl::query(Vec3 value, bool in_string) {
+  query_cpfg(3, value, in_string);
 }
 
 // ---- dispatch ----------------------------------------------------------------------
 
-void TurtleInterpreter::Impl::visit(ModuleId id, unsigned char* p, std::uint32_t source_index, bool in_string) {
+void TurtleInterpreter::Impl::visit(ModuleId id, const unsigned char* p, std::uint32_t source_index, bool in_string) {
   namespace m = rt::mid;
   if (id >= m::PredefinedCount) return;
   from_ = Provenance{source_index, id};
@@ -432,10 +432,10 @@ void TurtleInterpreter::Impl::visit(ModuleId id, unsigned char* p, std::uint32_t
       update_bending();
       break;
 
-    case m::GetPos: query(p, state_.position, in_string); break;
-    case m::GetHead: query(p, frame.heading, in_string); break;
-    case m::GetLeft: query(p, frame.left, in_string); break;
-    case m::GetUp: query(p, frame.up, in_string); break;
+    case m::GetPos: query(state_.position, in_string); break;
+    case m::GetHead: query(frame.heading, in_string); break;
+    case m::GetLeft: query(frame.left, in_string); break;
+    case m::GetUp: query(frame.up, in_string); break;
 
     case m::E1:
     case m::E2:
@@ -480,7 +480,7 @@ TurtleInterpreter::TurtleInterpreter(const TurtleSettings& settings, const Modul
 
 TurtleInterpreter::~TurtleInterpreter() { delete impl_; }
 
-void TurtleInterpreter::visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) {
+void TurtleInterpreter::visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string) {
   if (impl_->cpfg_) impl_->visit_cpfg(id, params, source_index, in_string);
   else impl_->visit(id, params, source_index, in_string);
 }
@@ -492,18 +492,33 @@ TurtleInterpreter::Pose TurtleInterpreter::pose() const {
   return Pose{s.position, s.frame.heading, s.frame.left, s.frame.up, s.width, s.scale};
 }
 
-geometry::Scene interpret_scene(derive::Derivation& derivation, const TurtleSettings& settings, std::string* trace) {
+const derive::ParameterWrites& TurtleInterpreter::query_answers() const { return impl_->query_answers_; }
+
+geometry::Scene interpret_scene(derive::Derivation& derivation, int view, const TurtleSettings& settings,
+                                std::string* trace) {
   geometry::Scene scene;
   TurtleInterpreter turtle(settings, derivation.types(), &scene, trace);
-  derivation.interpret(turtle);
+  derivation.interpret(view, turtle);
   turtle.finish();
   return scene;
 }
 
-void fill_query_modules(derive::Derivation& derivation, const TurtleSettings& settings) {
-  TurtleInterpreter turtle(settings, derivation.types(), nullptr);
-  derivation.interpret(turtle);
+void walk_string(const ModuleString& string, const ModuleTypes& types, const TurtleSettings& settings,
+                 geometry::Scene* scene, std::string* trace, derive::ParameterWrites* query_answers) {
+  TurtleInterpreter turtle(settings, types, scene, trace);
+  const StringView view = string.view(types);
+  std::uint32_t index = 0;
+  for (std::size_t at = view.begin; at < view.end; at = view.next(at))
+    turtle.visit(view.id_at(at), module_params(view.data, at), index++, true);
   turtle.finish();
+  if (query_answers) *query_answers = turtle.query_answers();
+}
+
+derive::ParameterWrites query_answers(derive::Derivation& derivation, const TurtleSettings& settings) {
+  TurtleInterpreter turtle(settings, derivation.types(), nullptr);
+  derivation.interpret(0, turtle);
+  turtle.finish();
+  return turtle.query_answers();
 }
 
 }  // namespace sylva::turtle

@@ -19,7 +19,7 @@ class TurtleInterpreter : public derive::InterpretedModuleVisitor {
                     std::string* trace = nullptr);
   ~TurtleInterpreter() override;
 
-  void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string) override;
+  void visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string) override;
   // Closes what the string left open (polygons, generalized cylinders).
   void finish();
 
@@ -31,6 +31,9 @@ class TurtleInterpreter : public derive::InterpretedModuleVisitor {
     float scale = 1;  // cpfg's turtle scale; 1 for L+C
   };
   Pose pose() const;
+  // The values of the query modules met in the string so far (GetPos ...,
+  // cpfg's ?P ...), for Derivation::write_parameters.
+  const derive::ParameterWrites& query_answers() const;
 
   TurtleInterpreter(const TurtleInterpreter&) = delete;
   TurtleInterpreter& operator=(const TurtleInterpreter&) = delete;
@@ -40,11 +43,18 @@ class TurtleInterpreter : public derive::InterpretedModuleVisitor {
   Impl* impl_;
 };
 
-// Interprets the derivation's current string into a Scene.
-geometry::Scene interpret_scene(derive::Derivation& derivation, const TurtleSettings& settings,
+// Interprets the derivation's current string, as view `view` shows it, into a Scene.
+geometry::Scene interpret_scene(derive::Derivation& derivation, int view, const TurtleSettings& settings,
                                 std::string* trace = nullptr);
 
-// Fills the parameters of the query modules in the string (the query pass).
-void fill_query_modules(derive::Derivation& derivation, const TurtleSettings& settings);
+// Walks `string` as it stands, without interpretation rules (module k of the
+// string is the provenance of what it draws), drawing into `scene` when given;
+// `query_answers`, when given, receives what its query modules would be told.
+void walk_string(const ModuleString& string, const ModuleTypes& types, const TurtleSettings& settings,
+                 geometry::Scene* scene, std::string* trace = nullptr, derive::ParameterWrites* query_answers = nullptr);
+
+// The values of the string's query modules (the query pass): the string
+// interpreted with view 0's rules (LPFG manual 5.12).
+derive::ParameterWrites query_answers(derive::Derivation& derivation, const TurtleSettings& settings);
 
 }  // namespace sylva::turtle

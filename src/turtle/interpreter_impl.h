@@ -32,10 +32,10 @@ inline constexpr float kEpsilon = 1e-5f;
 struct TurtleInterpreter::Impl {
   Impl(const TurtleSettings& settings, const ModuleTypes& types, Scene* scene, std::string* trace);
 
-  void visit(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
+  void visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string);
   // ---- cpfg_symbols.cpp: a cpfg model's modules, through its symbol table.
-  void visit_cpfg(ModuleId id, unsigned char* params, std::uint32_t source_index, bool in_string);
-  void query_cpfg(unsigned char* params, int count, Vec3 value, bool in_string);
+  void visit_cpfg(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string);
+  void query_cpfg(int count, Vec3 value, bool in_string);
   void finish();
 
   // ---- interpreter.cpp
@@ -52,7 +52,7 @@ struct TurtleInterpreter::Impl {
   void apply_tropisms();
   void change_elasticity(int id, float value, bool relative);
   void update_bending();  // bending_ from elasticity_
-  void query(unsigned char* params, Vec3 value, bool in_string);
+  void query(Vec3 value, bool in_string);
   void note(const char* text);
   // " (module N of the string)", for errors.
   std::string where() const;
@@ -118,6 +118,8 @@ struct TurtleInterpreter::Impl {
   std::string cpfg_pending_;
   Scene* scene_;
   std::string* trace_;
+  // What the query modules in the string receive (written after the walk).
+  derive::ParameterWrites query_answers_;
 
   TurtleState state_;
   std::vector<TurtleState> stack_;

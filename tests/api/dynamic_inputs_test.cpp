@@ -98,7 +98,7 @@ TEST(DynamicSurface, ReshapedPredefinedSurfaceIsDrawn) {
                   "  produce SetUPrecision(2) SetVPrecision(2) DSurface(s);\n"
                   "}\n",
                   {{"view.v", "surface: flat.s\n"}, {"flat.s", kPatch}});
-  run->simulation->derivation().run(0);
+  run->simulation->run(0);
   geometry::Scene scene = run->simulation->scene();
   ASSERT_EQ(scene.groups.size(), 2u);
   ASSERT_EQ(scene.positions.size(), 18u);
@@ -143,7 +143,7 @@ TEST(DynamicCurve, ChangedContourReachesCurveFunctionsAndCylinders) {
                   "}\n"
                   "axiom: ContourSides(8) CurrentContour(1) SetWidth(2) StartGC F(1) EndGC;\n",
                   {{"square.con", kSquare}});
-  derive::Derivation& d = run->simulation->derivation();
+  Simulation& d = *run->simulation;
   d.begin();
   const geometry::Scene original = run->simulation->scene();
   ASSERT_EQ(original.positions.size(), 16u);
@@ -195,8 +195,8 @@ TEST(Parameters, ValReadsTheParameterFile) {
                   "axiom: A(0);\n"
                   "A(x) : { float len = val(LENGTH), a = val(ANGLE); produce A(len * 100 + a); }\n",
                   {{"panel.vset", "#define LENGTH 2.5\n\n#define ANGLE 60\n"}});
-  run->simulation->derivation().run();
-  std::string text = io::format_string(run->simulation->derivation().string(), run->simulation->types());
+  run->simulation->run();
+  std::string text = io::format_string(run->simulation->string(), run->simulation->types());
   EXPECT_EQ(text, "A(310)\n");
 }
 

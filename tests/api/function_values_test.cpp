@@ -69,7 +69,7 @@ TEST(FunctionValues, FuncTfuncPfuncFuncTangentAndValAsLpfgComputesThem) {
   Simulation s(dir + "/lsystem.l", options, [&](const std::string& m) {
     if (m.find(": warning: ") == std::string::npos) messages += m;
   });
-  s.derivation().run();
+  s.run();
   // lpfg numbers the .fset's functions, the .tset's, the .vset's parameters,
   // then the .func files'. func(f, 0) is not quite the first point's y: lpfg
   // tabulates y where bisection finds x within 0.01/samples. tfunc maps

@@ -23,7 +23,7 @@ struct Run {
   std::string messages;
   std::unique_ptr<Simulation> simulation;
   std::string string() const {
-    return io::format_string(simulation->derivation().string(), simulation->types());
+    return io::format_string(simulation->string(), simulation->types());
   }
 };
 
@@ -43,7 +43,7 @@ std::unique_ptr<Run> run(const std::string& name, const std::string& model,
   Run* raw = r.get();
   r->simulation = std::make_unique<Simulation>(dir + "/lsystem.l", options,
                                                [raw](const std::string& text) { raw->messages += text; });
-  r->simulation->derivation().run();
+  r->simulation->run();
   return r;
 }
 

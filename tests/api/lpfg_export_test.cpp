@@ -62,7 +62,7 @@ TEST(LpfgExport, LinesCylindersCirclesAndSpheresAsLpfgWritesThem) {
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   options.input_files.push_back(dir + "/view.v");
   Simulation simulation(dir + "/model.l", options);
-  simulation.derivation().run();
+  simulation.run();
   const std::string path = dir + "/out.obj";
   write_output(path, simulation.scene(), simulation, {});
 

@@ -505,10 +505,10 @@ TEST(ContextMatchingModel, InterpretationIsNotStoredInString) {
   build::BuildOptions options;
   options.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(model, options);
-  simulation.derivation().run();
-  EXPECT_EQ(io::format_string(simulation.derivation().string(), simulation.types()), "A(3)\n");
-  EXPECT_EQ(io::format_string(simulation.derivation().interpreted(), simulation.types()), "B(3) C(3)\n");
-  EXPECT_EQ(io::format_string(simulation.derivation().string(), simulation.types()), "A(3)\n");
+  simulation.run();
+  EXPECT_EQ(io::format_string(simulation.string(), simulation.types()), "A(3)\n");
+  EXPECT_EQ(io::format_string(simulation.interpreted(0), simulation.types()), "B(3) C(3)\n");
+  EXPECT_EQ(io::format_string(simulation.string(), simulation.types()), "A(3)\n");
 }
 
 }  // namespace

@@ -67,8 +67,8 @@ TEST(Groups, InterpretationUsesTheCurrentGroup) {
   build::BuildOptions options;
   options.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(model, options);
-  simulation.derivation().run();
-  EXPECT_EQ(io::format_string(simulation.derivation().interpreted(), simulation.types()), "C(2) C(5)\n");
+  simulation.run();
+  EXPECT_EQ(io::format_string(simulation.interpreted(0), simulation.types()), "C(2) C(5)\n");
 }
 
 TEST(Groups, EmptyGroupIsStillAGroup) {

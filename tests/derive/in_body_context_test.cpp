@@ -179,8 +179,8 @@ TEST(InBodyContext, InterpretationRules) {
   build::BuildOptions options;
   options.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(model, options);
-  simulation.derivation().run();
-  EXPECT_EQ(io::format_string(simulation.derivation().interpreted(), simulation.types()), "E(1) E(13) C(3)\n");
+  simulation.run();
+  EXPECT_EQ(io::format_string(simulation.interpreted(0), simulation.types()), "E(1) E(13) C(3)\n");
 }
 
 // ---- bad input ------------------------------------------------------------

@@ -24,7 +24,7 @@ TEST(StringGrowth, ABurstOfGrowthDoesNotInflateTheNextStep) {
   SimulationOptions options;
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(path, options);
-  simulation.derivation().run();
+  simulation.run();
   // Step 1 lays out B(0) .. B(199999); steps 2 and 3 add 2 to each.
   const std::string text = derive_string(path);
   EXPECT_EQ(std::count(text.begin(), text.end(), 'B'), 200000);

@@ -73,7 +73,7 @@ SimulationOptions options_with(std::shared_ptr<env::Field> field) {
 
 // The string in the text format, without the newline.
 std::string string_of(Simulation& s) {
-  std::string text = io::format_string(s.derivation().string(), s.types());
+  std::string text = io::format_string(s.string(), s.types());
   if (!text.empty() && text.back() == '\n') text.pop_back();
   return text;
 }
@@ -83,7 +83,7 @@ void expect_vector(const std::array<float, 3>& actual, std::array<float, 3> expe
 }
 
 // The parameters of the first module `id` in the string, as floats.
-std::vector<float> parameters_of(const derive::Derivation& d, ModuleId id) {
+std::vector<float> parameters_of(const Simulation& d, ModuleId id) {
   const StringView v = d.string().view(d.types());
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
     if (v.id_at(at) != id) continue;
@@ -111,7 +111,7 @@ axiom: Left(90) F(1) E1(5) Right(90) F(2) E2(0,0) SetWidth(3) EA20(sevens()) F(1
 TEST(EnvironmentPass, QueriesCarryTheTurtleAndTheFollowingModule) {
   auto field = std::make_shared<EchoField>();
   Simulation s(write_model("queries", kLcModel), options_with(field));
-  s.derivation().run();
+  s.run();
   ASSERT_EQ(field->steps, (std::vector<int>{0}));  // before the one step: none after it
   const std::vector<env::Query>& q = field->passes[0];  // the axiom as written
   ASSERT_EQ(q.size(), 3u);
@@ -145,7 +145,7 @@ TEST(EnvironmentPass, QueriesCarryTheTurtleAndTheFollowingModule) {
 
   // The answers, in the string: E1 takes x, E2 x and y, EA20 all fourteen
   // values, keeping its own 7s after them.
-  const derive::Derivation& d = s.derivation();
+  const Simulation& d = s;
   expect_floats(parameters_of(d, rt::mid::E1), {-1});
   expect_floats(parameters_of(d, rt::mid::E2), {-1, 2});
   expect_floats(parameters_of(d, rt::mid::EA20), {-1, 2, 0, 0, 1, 0, -1, 0, 0, 0, 0, 1, 3, 1, 7, 7, 7, 7, 7, 7});
@@ -157,8 +157,8 @@ TEST(EnvironmentPass, CleanEa20ZeroesWhatIsNotAnswered) {
   SimulationOptions options = options_with(field);
   options.environment.clean_ea20 = true;
   Simulation s(write_model("clean", kLcModel), options);
-  s.derivation().run();
-  expect_floats(parameters_of(s.derivation(), rt::mid::EA20),
+  s.run();
+  expect_floats(parameters_of(s, rt::mid::EA20),
                 {-1, 2, 0, 0, 1, 0, -1, 0, 0, 0, 0, 1, 3, 1, 0, 0, 0, 0, 0, 0});
 }
 
@@ -166,7 +166,7 @@ TEST(EnvironmentPass, TheFieldIsToldToFinishWithTheSimulation) {
   auto field = std::make_shared<EchoField>();
   {
     Simulation s(write_model("finish", kLcModel), options_with(field));
-    s.derivation().run();
+    s.run();
   }
   EXPECT_EQ(field->finished, 1);
 }
@@ -181,7 +181,7 @@ TEST(EnvironmentPass, TheCommFileSetsTheCounts) {
   SimulationOptions options = options_with(field);
   options.input_files.push_back(e_file);
   Simulation s(model, options);
-  s.derivation().run();
+  s.run();
   ASSERT_EQ(field->passes.size(), 1u);
   const env::Query& q = field->passes[0][0];
   EXPECT_EQ(q.turtle.position_count, 2);
@@ -200,7 +200,7 @@ axiom: E1(0);
 E1(v): { produce E1(v) B(v); }
 )"),
                options_with(field));
-  s.derivation().run();
+  s.run();
   // The axiom E1(0) answered E1(0); step 1: E1(0) B(0), answered E1(10);
   // step 2: E1(10) B(10) B(0).
   EXPECT_EQ(string_of(s), "E1(10) B(10) B(0)");
@@ -222,7 +222,7 @@ TEST(EnvironmentPass, NoEnvironmentSkipsTheNextPass) {
                              std::string("#include <lpfgall.h>\nderivation length: 4;\n") + control +
                                  "\naxiom: E1(0);\n"),
                  options_with(field));
-    s.derivation().run();
+    s.run();
     EXPECT_EQ(field->steps, (std::vector<int>{0, 1, 3})) << control;
     EXPECT_EQ(string_of(s), "E1(30)") << control;
   }
@@ -236,7 +236,7 @@ std::string write_cpfg(const std::string& name, const std::string& axiom) {
 TEST(EnvironmentPass, CpfgCommunicationModulesOfAnyLength) {
   auto field = std::make_shared<EchoField>();
   Simulation s(write_cpfg("cpfg", "F(2)+(90)?E(0,0)F(1)?E(9)?E"), options_with(field));
-  s.derivation().run();
+  s.run();
   ASSERT_EQ(field->passes.size(), 1u);  // before the one step
   const std::vector<env::Query>& q = field->passes[0];
   ASSERT_EQ(q.size(), 3u);
@@ -284,7 +284,7 @@ derivation length: 1;
 axiom: E1(0) S(pair()) E1(0) N(not_a_number(), minus_infinity());
 )"),
                options_with(field));
-  s.derivation().run();
+  s.run();
   ASSERT_EQ(field->passes.size(), 1u);
   const std::vector<env::Query>& q = field->passes[0];
   ASSERT_EQ(q.size(), 2u);
@@ -313,7 +313,7 @@ TEST(EnvironmentPass, AnAnswerForAMissingParameterIsAnError) {
       write_model("missing-parameter", "#include <lpfgall.h>\nderivation length: 1;\naxiom: F(1) E1(0);\n");
   try {
     Simulation s(model, options_with(std::make_shared<IndexField>(5)));
-    s.derivation().run();
+    s.run();
     FAIL() << "no error";
   } catch (const ModelError& e) {
     EXPECT_EQ(std::string(e.what()), model + ": error: the environment answered parameter 5 of module 1 (E1), "
@@ -322,7 +322,7 @@ TEST(EnvironmentPass, AnAnswerForAMissingParameterIsAnError) {
   // The last parameter it has is fine.
   Simulation s(write_model("last-parameter", "#include <lpfgall.h>\nderivation length: 1;\naxiom: E2(0,0);\n"),
                options_with(std::make_shared<IndexField>(1)));
-  s.derivation().run();
+  s.run();
   EXPECT_EQ(string_of(s), "E2(0,1)");
 }
 
@@ -340,7 +340,7 @@ E1(v) : { produce F(1) E1(v); }
 E2(a,b) : { produce; }
 )"),
                options_with(field));
-  s.derivation().run();
+  s.run();
   ASSERT_EQ(field->passes.size(), 1u);
   const std::vector<env::Query>& q = field->passes[0];
   ASSERT_EQ(q.size(), 1u);

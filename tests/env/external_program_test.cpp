@@ -42,8 +42,8 @@ std::string derive_with_environment(const std::string& model, const std::string&
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   options.input_files = {e_file};
   Simulation s(model, options);
-  s.derivation().run(steps);
-  std::string text = io::format_string(s.derivation().string(), s.types());
+  s.run(steps);
+  std::string text = io::format_string(s.string(), s.types());
   if (!text.empty() && text.back() == '\n') text.pop_back();
   return text;
 }
@@ -235,8 +235,8 @@ A(x) : {
   options.input_files = {e_file};
   options.environment.timeout_seconds = 10;
   Simulation s(model, options);
-  s.derivation().run();
-  const std::string text = io::format_string(s.derivation().string(), s.types());
+  s.run();
+  const std::string text = io::format_string(s.string(), s.types());
   EXPECT_EQ(text.substr(0, 15), "F(1) E1(2) F(1)");  // answered in the pass before step 3
   std::ifstream in(log);
   const std::string begins((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

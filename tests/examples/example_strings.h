@@ -140,16 +140,16 @@ class Stepper {
     options.cache_dir = SYLVA_TEST_CACHE_DIR;
     options.defines = std::move(defines);
     simulation_ = std::make_unique<Simulation>(model, options, [this](const std::string& m) { messages += m; });
-    simulation_->derivation().begin();
+    simulation_->begin();
   }
   void step(int n = 1) {
-    for (int i = 0; i < n; ++i) simulation_->derivation().step();
+    for (int i = 0; i < n; ++i) simulation_->step();
   }
-  int steps_done() { return simulation_->derivation().steps_done(); }
-  std::string text() { return trim(io::format_string(simulation_->derivation().string(), simulation_->types())); }
+  int steps_done() { return simulation_->step_number(); }
+  std::string text() { return trim(io::format_string(simulation_->string(), simulation_->types())); }
   std::vector<Module> modules() { return parse_modules(text()); }
   std::string interpreted() {
-    return trim(io::format_string(simulation_->derivation().interpreted(), simulation_->types()));
+    return trim(io::format_string(simulation_->interpreted(0), simulation_->types()));
   }
 
   std::string messages;

@@ -36,7 +36,7 @@ inline std::unique_ptr<Simulation> load(const std::string& name, const std::vect
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   for (const std::string& input : inputs) options.input_files.push_back(example_file(name, input));
   auto simulation = std::make_unique<Simulation>(model_of(name), options, [](const std::string&) {});
-  simulation->derivation().run(steps);
+  simulation->run(steps);
   return simulation;
 }
 

@@ -192,7 +192,7 @@ TEST(GeometryExampleTernaryTree, FirstBranchesAfterOneStep) {
 TEST(GeometryExampleQueryHeight, InternodesAndTipHeightsFromTheString) {
   auto sim = load("query-height", {});
   using namespace test::examples;
-  const std::vector<Module> s = parse_modules(io::format_string(sim->derivation().string(), sim->types()));
+  const std::vector<Module> s = parse_modules(io::format_string(sim->string(), sim->types()));
   EXPECT_EQ(count_named(s, "F"), kQueryInternodes);
   EXPECT_EQ(count_named(s, "A"), 1);
   EXPECT_EQ(count_named(s, "B"), 5);

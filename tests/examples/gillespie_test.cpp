@@ -47,17 +47,18 @@ class Runs {
     options.defines = std::move(defines);
     simulation_ = std::make_unique<Simulation>(model, options, [this](const std::string& m) { messages += m; });
   }
-  derive::Derivation& derivation() { return simulation_->derivation(); }
+  Simulation& simulation() { return *simulation_; }
   std::string text() {
-    std::string s = io::format_string(derivation().string(), simulation_->types());
+    std::string s = simulation_->string_text();
     if (!s.empty() && s.back() == '\n') s.pop_back();
     return s;
   }
   // One run of `steps` steps from a fresh Start.
   std::string run(int steps) {
     messages.clear();
-    derivation().begin();
-    for (int k = 0; k < steps; ++k) derivation().step();
+    simulation_->rewind();
+    simulation_->begin();
+    for (int k = 0; k < steps; ++k) simulation_->step();
     return text();
   }
 
@@ -79,15 +80,16 @@ std::string write_model(const std::string& name, const std::string& text) {
 // state at t = 2 is the string before the last step.
 TEST(ExampleImmigrationDeath, CountAtTheEndTimeIsPoissonWithTheAnalyticMean) {
   Runs runs(example_path("immigration-death/immigration-death.l"));
-  derive::Derivation& d = runs.derivation();
+  Simulation& d = runs.simulation();
   const int kRuns = 2000;
   std::vector<double> counts;
   std::set<std::string> finals;
   for (int r = 0; r < kRuns; ++r) {
+    d.rewind();
     d.begin();
     std::size_t molecules = 0;  // the Source is the other module
     int steps = 0;
-    while (!d.stop_requested()) {
+    while (!d.stopped()) {
       molecules = d.string().count_modules(d.types()) - 1;
       d.step();
       ASSERT_LT(++steps, 1000) << "run " << r << " does not reach the end time";
@@ -238,7 +240,7 @@ TEST(Gillespie, NoReactionLeftMeansNothingChangesAndTheClockStands) {
   const std::string converted = runs.run(20);
   const double end = read_clock(runs.messages).times.back();
   runs.messages.clear();
-  for (int k = 0; k < 3; ++k) runs.derivation().step();
+  for (int k = 0; k < 3; ++k) runs.simulation().step();
   EXPECT_EQ(runs.text(), converted);
   const Clock clock = read_clock(runs.messages, end);
   ASSERT_EQ(clock.taus.size(), 3u) << runs.messages;

@@ -81,10 +81,10 @@ TEST(CpfgSubLsystemSeed, OneStreamAcrossLsystemsWithEachLsystemsTotals) {
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(dir + "/lsystem.l", build);
-  simulation.derivation().begin();
+  simulation.begin();
   for (int steps = 1; steps <= 6; ++steps) {
-    simulation.derivation().step();
-    std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+    simulation.step();
+    std::string text = io::format_string(simulation.string(), simulation.types());
     if (!text.empty() && text.back() == '\n') text.pop_back();
     EXPECT_EQ(text, expected_after(steps)) << "after " << steps << " steps";
   }
@@ -101,8 +101,8 @@ TEST(CpfgSubLsystemSeed, WindowSeedingStartsFromTheSeed) {
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   options.cpfg_window_seeding = true;
   Simulation simulation(dir + "/lsystem.l", options);
-  simulation.derivation().run(6);
-  std::string text = io::format_string(simulation.derivation().string(), simulation.types());
+  simulation.run(6);
+  std::string text = io::format_string(simulation.string(), simulation.types());
   if (!text.empty() && text.back() == '\n') text.pop_back();
   unsigned short seeded[3] = {1, 0, 155};
   EXPECT_EQ(text, expected_after(6, seeded));

@@ -55,8 +55,8 @@ std::string text_of(const ModuleString& string, const Simulation& s) {
 }
 
 std::string string_after(Simulation& s, int steps) {
-  s.derivation().run(steps);
-  return text_of(s.derivation().string(), s);
+  s.run(steps);
+  return text_of(s.string(), s);
 }
 
 // The manual's structure: L-system 1 calls L-system 2 on B. B and F outside
@@ -113,7 +113,7 @@ TEST(CpfgSubLsystem, DecompositionAndHomomorphismPerLsystem) {
                  "decomposition\nD --> B\nhomomorphism\nB --> F\nendlsystem\n"
                  "Lsystem: 2\nAxiom: D\ndecomposition\nD --> E\nhomomorphism\nE --> G\nB --> f\nendlsystem\n");
   EXPECT_EQ(string_after(*m.simulation, 1), "B?(2,1)E$B");
-  EXPECT_EQ(text_of(m.simulation->derivation().interpreted(), *m.simulation), "F?(2,1)G$F");
+  EXPECT_EQ(text_of(m.simulation->interpreted(0), *m.simulation), "F?(2,1)G$F");
   fs::remove_all(m.dir);
 }
 
@@ -140,9 +140,9 @@ TEST(CpfgSubLsystem, ACallToNoLsystemIsAClearError) {
   // A computed label: when the derivation meets it.
   Model m = load("unknown-computed", "Lsystem: 1\nAxiom: A(7)\nA(t) --> ?(t,1)B$\nB --> C\nendlsystem\n"
                                      "Lsystem: 2\nAxiom: B\nendlsystem\n");
-  m.simulation->derivation().run(1);
+  m.simulation->run(1);
   try {
-    m.simulation->derivation().run(2);
+    m.simulation->run(2);
     FAIL() << "the call to L-system 7 was accepted";
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("no 'Lsystem: 7'"), std::string::npos) << e.what();
@@ -164,7 +164,7 @@ TEST(CpfgSubLsystem, DuplicateLabelsAreAnError) {
 TEST(CpfgSubLsystem, TurtleScalesTheCalledStructure) {
   Model m = load("turtle", "Lsystem: 1\nAxiom: F?(2,0.5)FF?(2,0.5)F$F$F\nendlsystem\nLsystem: 2\nAxiom: F\nendlsystem\n",
                  "angle increment: 90");
-  m.simulation->derivation().run(0);
+  m.simulation->run(0);
   const Scene s = m.simulation->scene();
   ASSERT_EQ(s.segments.size(), 6u);
   const float lengths[] = {1, 0.5f, 0.5f, 0.25f, 0.5f, 1};
@@ -182,8 +182,8 @@ TEST(CpfgSubLsystem, TurtleScalesTheCalledStructure) {
 TEST(CpfgSurface, PredefinedSurfaceAtTheTurtle) {
   Model m = load("surface", "Lsystem: 1\nAxiom: F~l(2)\nendlsystem\n", "surface: l leaf.s 1",
                  {"data/inputs/leaf.s"});
-  m.simulation->derivation().run(0);
-  EXPECT_EQ(text_of(m.simulation->derivation().string(), *m.simulation), "F~l(2)");
+  m.simulation->run(0);
+  EXPECT_EQ(text_of(m.simulation->string(), *m.simulation), "F~l(2)");
   const Scene s = m.simulation->scene();
   ASSERT_EQ(s.groups.size(), 1u);
   EXPECT_EQ(s.groups[0].kind, geometry::TriangleGroup::Kind::Surface);
@@ -207,7 +207,7 @@ TEST(CpfgSurface, PredefinedSurfaceAtTheTurtle) {
 TEST(CpfgSurface, UnknownIdIsAClearError) {
   Model m = load("surface-missing", "Lsystem: 1\nAxiom: F~k\nendlsystem\n", "surface: l leaf.s 1",
                  {"data/inputs/leaf.s"});
-  m.simulation->derivation().run(0);
+  m.simulation->run(0);
   try {
     m.simulation->scene();
     FAIL() << "~k was drawn";

@@ -142,7 +142,7 @@ TEST(BackSides, CpfgBackColourReachesTheScene) {
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(dir + "/m.l", build);
-  simulation.derivation().run(0);
+  simulation.run(0);
   const Scene scene = simulation.scene();
   ASSERT_EQ(scene.groups.size(), 2u);
   EXPECT_EQ(scene.groups[0].kind, geometry::TriangleGroup::Kind::Polygon);

@@ -111,7 +111,7 @@ TEST(Textures, CpfgPolygonsAcrossTheirExtent) {
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation sim(dir + "/p.l", SimulationOptions{build, {dir + "/p.v"}});
-  sim.derivation().run(0);
+  sim.run(0);
   const Scene s = sim.scene();
   ASSERT_EQ(s.groups.size(), 1u);
   EXPECT_EQ(s.groups[0].texture, 0);  // @Tx(1): the first texture

@@ -27,7 +27,7 @@ Scene draw_cpfg_cylinder(const std::string& name, const std::string& axiom,
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(dir + "/lsystem.l", SimulationOptions{build, {dir + "/view.v"}});
-  simulation.derivation().run(0);
+  simulation.run(0);
   return simulation.scene();
 }
 

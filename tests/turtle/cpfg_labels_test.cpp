@@ -33,13 +33,14 @@ CpfgModel cpfg_lsystem(const std::string& name, const std::string& body, int ste
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   CpfgModel m;
   m.simulation = std::make_unique<Simulation>(dir + "/lsystem.l", SimulationOptions{build, {dir + "/view.v"}});
-  m.simulation->derivation().run(steps);
-  m.scene = m.simulation->scene(&m.trace);
+  m.simulation->run(steps);
+  m.scene = m.simulation->scene();
+  m.trace = m.simulation->turtle_trace(m.simulation->primary_view());
   return m;
 }
 
 std::string string_of(const CpfgModel& m) {
-  return io::format_string(m.simulation->derivation().string(), m.simulation->types());
+  return io::format_string(m.simulation->string(), m.simulation->types());
 }
 
 // The k-th parameter of the first module named `name` in the string.
@@ -47,7 +48,7 @@ float first_param(const CpfgModel& m, const std::string& name, int k) {
   const auto& types = m.simulation->types();
   for (abi::ModuleId id = 0; id < types.size(); ++id)
     if (types.name(id) == name && types[id].param_size >= 4u * static_cast<unsigned>(k + 1))
-      return module_floats(m.simulation->derivation(), id, 0, k + 1)[static_cast<std::size_t>(k)];
+      return module_floats(*m.simulation, id, 0, k + 1)[static_cast<std::size_t>(k)];
   ADD_FAILURE() << "no module " << name;
   return NAN;
 }

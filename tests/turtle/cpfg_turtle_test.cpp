@@ -37,7 +37,7 @@ CpfgModel cpfg_model(const std::string& name, const std::string& axiom, const st
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   CpfgModel m;
   m.simulation = std::make_unique<Simulation>(dir + "/lsystem.l", SimulationOptions{build, {dir + "/view.v"}});
-  m.simulation->derivation().run(steps);
+  m.simulation->run(steps);
   m.scene = m.simulation->scene();
   return m;
 }
@@ -273,8 +273,8 @@ TEST(CpfgTurtle, UnknownSymbolsAreIgnored) {
 TEST(CpfgTurtle, QueryModulesReceiveTheTurtleAfterEveryStep) {
   CpfgModel m = cpfg_model("query", "F(2)+?P(0,0,0)?H(0,0,0)", "angle increment: 90",
                            "?P(x,y,z) --> F(1)?P(x,y,z)", 1);
-  derive::Derivation& d = m.simulation->derivation();
-  EXPECT_TRUE(d.uses_query_modules());
+  const Simulation& d = *m.simulation;
+  EXPECT_TRUE(d.fills_query_modules());
   const ModuleId p = *d.types().find("?P");
   const ModuleId h = *d.types().find("?H");
   // The step's F(1) heads along -x after the turn: the query pass after the
@@ -285,8 +285,8 @@ TEST(CpfgTurtle, QueryModulesReceiveTheTurtleAfterEveryStep) {
 
 TEST(CpfgTurtle, QueryWithTwoParametersGetsXAndY) {
   CpfgModel m = cpfg_model("query2", "-F(3)?P(0,0)", "angle increment: 90", "?P(x,y) --> ?P(x,y)", 1);
-  derive::Derivation& d = m.simulation->derivation();
-  EXPECT_TRUE(d.uses_query_modules());
+  const Simulation& d = *m.simulation;
+  EXPECT_TRUE(d.fills_query_modules());
   const std::vector<float> xy = module_floats(d, *d.types().find("?P"), 0, 2);
   ASSERT_EQ(xy.size(), 2u);
   EXPECT_NEAR(xy[0], 3, 1e-5);
@@ -296,13 +296,13 @@ TEST(CpfgTurtle, QueryWithTwoParametersGetsXAndY) {
 TEST(CpfgTurtle, QueriesAreFilledWithoutAProductionReadingThem) {
   // cpfg fills ?P wherever it occurs: the reference cpfg gives F?P(0,1,0).
   CpfgModel m = cpfg_model("no-query", "A", "", "A --> F?P(0,0,0)", 1);
-  EXPECT_TRUE(m.simulation->derivation().uses_query_modules());
-  EXPECT_EQ(io::format_string(m.simulation->derivation().string(), m.simulation->types()), "F?P(0,1,0)\n");
+  EXPECT_TRUE(m.simulation->fills_query_modules());
+  EXPECT_EQ(io::format_string(m.simulation->string(), m.simulation->types()), "F?P(0,1,0)\n");
 }
 
 TEST(CpfgTurtle, SymbolTableIsByModuleId) {
   CpfgModel m = cpfg_model("table", "F F(2) +(1) [ ] ?P(1,2,3) A", "");
-  const ModuleTypes& types = m.simulation->derivation().types();
+  const ModuleTypes& types = m.simulation->types();
   turtle::CpfgSymbols table(types);
   EXPECT_EQ(table.size(), types.size());
   EXPECT_EQ(table.op(rt::mid::SB), turtle::CpfgOp::Push);
@@ -369,10 +369,9 @@ TEST(CpfgTurtleEndToEnd, SnowflakeHasThreeTimesFourToTheNSegments) {
   build::BuildOptions build;
   build.cache_dir = SYLVA_TEST_CACHE_DIR;
   Simulation simulation(dir + "/lsystem.l", SimulationOptions{build, {dir + "/view.v"}});
-  derive::Derivation& d = simulation.derivation();
-  d.begin();
+  simulation.begin();
   for (int n = 0; n <= 3; ++n) {
-    if (n > 0) d.step();
+    if (n > 0) simulation.step();
     Scene s = simulation.scene();
     std::size_t expected = 3;
     for (int k = 0; k < n; ++k) expected *= 4;

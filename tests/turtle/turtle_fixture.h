@@ -35,19 +35,40 @@ inline std::unique_ptr<Simulation> load_model(const std::string& name, const std
 inline Scene draw(const std::string& name, const std::string& axiom, const turtle::TurtleSettings& settings = {},
                   std::string* trace = nullptr, const std::string& declarations = "") {
   auto simulation = load_model(name, declarations + "\nderivation length: 0;\naxiom: " + axiom + ";");
-  simulation->derivation().run(0);
-  return turtle::interpret_scene(simulation->derivation(), settings, trace);
+  simulation->run(0);
+  Scene scene;
+  turtle::walk_string(simulation->string(), simulation->types(), settings, &scene, trace);
+  return scene;
 }
 
-// The parameters of the n-th module `id` in the derivation's string, as floats.
-inline std::vector<float> module_floats(const derive::Derivation& d, abi::ModuleId id, int nth, int count) {
-  const StringView v = d.string().view(d.types());
+// The parameters of the n-th module `id` in the simulation's string, as floats.
+inline std::vector<float> module_floats(const Simulation& s, abi::ModuleId id, int nth, int count) {
+  const StringView v = s.string().view(s.types());
   int seen = 0;
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
     if (v.id_at(at) != id || seen++ != nth) continue;
     std::vector<float> out(static_cast<std::size_t>(count));
     std::memcpy(out.data(), v.data + at + sizeof(abi::ModuleId), sizeof(float) * out.size());
     return out;
+  }
+  return {};
+}
+
+// What the turtle, with `settings`, tells the n-th query module `id` of the
+// simulation's string (its first `count` parameters).
+inline std::vector<float> queried_floats(const Simulation& s, const turtle::TurtleSettings& settings,
+                                         abi::ModuleId id, int nth, int count) {
+  derive::ParameterWrites answers;
+  turtle::walk_string(s.string(), s.types(), settings, nullptr, nullptr, &answers);
+  const StringView v = s.string().view(s.types());
+  std::uint32_t index = 0;
+  int seen = 0;
+  for (std::size_t at = v.begin; at < v.end; at = v.next(at), ++index) {
+    if (v.id_at(at) != id || seen++ != nth) continue;
+    for (const derive::ParameterWrites::Write& w : answers.writes())
+      if (w.module_index == index && w.first_float == 0 && w.count >= count)
+        return std::vector<float>(answers.values().begin() + w.value_offset,
+                                  answers.values().begin() + w.value_offset + count);
   }
   return {};
 }

@@ -15,10 +15,9 @@ TEST(TurtleLargePlant, MillionModuleBranchingPlant) {
                         "derivation length: 17;\n"
                         "axiom: A(0);\n"
                         "A(n) : { produce F(1) SB Left(30) A(n+1) EB SB Right(25) RollL(137.5) A(n+1) EB; }\n");
-  derive::Derivation& d = sim->derivation();
-  d.run();
-  ASSERT_EQ(d.string().count_modules(d.types()), 1179640u);
-  Scene s = turtle::interpret_scene(d, {});
+  sim->run();
+  ASSERT_EQ(sim->string().count_modules(sim->types()), 1179640u);
+  Scene s = sim->scene(0);
   EXPECT_EQ(s.segments.size(), 131071u);
 }
 

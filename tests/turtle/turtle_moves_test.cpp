@@ -142,10 +142,8 @@ TEST(TurtleQuery, GetPosAndFrameAreWrittenBackAfterAStep) {
                         "derivation length: 1;\n"
                         "axiom: F(2) Left(90) F(1) GetPos(0,0,0) GetHead(0,0,0) GetLeft(0,0,0) GetUp(0,0,0) A;\n"
                         "GetPos(x,y,z) < A() : { produce A; }\n");
-  derive::Derivation& d = sim->derivation();
-  ASSERT_TRUE(d.uses_query_modules());
-  turtle::TurtleSettings settings;
-  d.set_query_pass([&](derive::Derivation& self) { turtle::fill_query_modules(self, settings); });
+  Simulation& d = *sim;
+  ASSERT_TRUE(d.fills_query_modules());
   d.run(1);
   expect_near(module_floats(d, mid::GetPos, 0, 3), {-1, 2, 0});
   expect_near(module_floats(d, mid::GetHead, 0, 3), {-1, 0, 0});
@@ -162,11 +160,9 @@ TEST(TurtleQuery, ModelReadsThePositionItQueried) {
                         "derivation length: 6;\n"
                         "axiom: GetPos(0,0,0) A;\n"
                         "GetPos(x,y,z) < A() : { if (y < 2.5) produce F(1) GetPos(0,0,0) A; }\n");
-  derive::Derivation& d = sim->derivation();
-  turtle::TurtleSettings settings;
-  d.set_query_pass([&](derive::Derivation& self) { turtle::fill_query_modules(self, settings); });
+  Simulation& d = *sim;
   d.run();
-  Scene s = turtle::interpret_scene(d, settings);
+  Scene s = d.scene(0);
   ASSERT_EQ(s.segments.size(), 3u);
   expect_near(module_floats(d, mid::GetPos, 3, 3), {0, 3, 0});
 }
@@ -180,17 +176,16 @@ TEST(TurtleQuery, SetHeadAndSetHead3f) {
                         "axiom: SB SetHead(2,0,0, 0,3,0) GetHead(0,0,0) GetLeft(0,0,0) GetUp(0,0,0) EB "
                         "SB SetHead3f(V3f(1,0,0)) GetHead(0,0,0) GetLeft(0,0,0) GetUp(0,0,0) EB "
                         "SB SetHead(1,0,0, 1,0,0) GetHead(0,0,0) EB;\n");
-  derive::Derivation& d = sim->derivation();
-  d.run(0);
-  turtle::fill_query_modules(d, {});
-  expect_near(module_floats(d, mid::GetHead, 0, 3), {1, 0, 0});
-  expect_near(module_floats(d, mid::GetLeft, 0, 3), {0, 0, -1});
-  expect_near(module_floats(d, mid::GetUp, 0, 3), {0, 1, 0});
-  expect_near(module_floats(d, mid::GetHead, 1, 3), {1, 0, 0});
-  expect_near(module_floats(d, mid::GetLeft, 1, 3), {0, 1, 0});
-  expect_near(module_floats(d, mid::GetUp, 1, 3), {0, 0, 1});
+  const Simulation& d = *sim;
+  sim->run(0);
+  expect_near(queried_floats(d, {}, mid::GetHead, 0, 3), {1, 0, 0});
+  expect_near(queried_floats(d, {}, mid::GetLeft, 0, 3), {0, 0, -1});
+  expect_near(queried_floats(d, {}, mid::GetUp, 0, 3), {0, 1, 0});
+  expect_near(queried_floats(d, {}, mid::GetHead, 1, 3), {1, 0, 0});
+  expect_near(queried_floats(d, {}, mid::GetLeft, 1, 3), {0, 1, 0});
+  expect_near(queried_floats(d, {}, mid::GetUp, 1, 3), {0, 0, 1});
   // H parallel to U: ignored.
-  expect_near(module_floats(d, mid::GetHead, 2, 3), {0, 1, 0});
+  expect_near(queried_floats(d, {}, mid::GetHead, 2, 3), {0, 1, 0});
 }
 
 // RollToVert after Left(45) RollL(90): H = (-a, a, 0) with a = 1/sqrt(2).
@@ -203,18 +198,17 @@ TEST(TurtleQuery, RollToVert) {
                         "axiom: SB Left(45) RollL(90) RollToVert GetHead(0,0,0) GetLeft(0,0,0) GetUp(0,0,0) EB "
                         "SB Right(90) RollL(37) RollToVert GetLeft(0,0,0) GetUp(0,0,0) EB "
                         "SB RollL(20) RollToVert GetUp(0,0,0) EB;\n");
-  derive::Derivation& d = sim->derivation();
-  d.run(0);
-  turtle::fill_query_modules(d, {});
+  const Simulation& d = *sim;
+  sim->run(0);
   const float a = 0.70710678f;
-  expect_near(module_floats(d, mid::GetHead, 0, 3), {-a, a, 0});
-  expect_near(module_floats(d, mid::GetLeft, 0, 3), {0, 0, 1});
-  expect_near(module_floats(d, mid::GetUp, 0, 3), {a, a, 0});
-  expect_near(module_floats(d, mid::GetLeft, 1, 3), {0, 0, -1});
-  expect_near(module_floats(d, mid::GetUp, 1, 3), {0, 1, 0});
+  expect_near(queried_floats(d, {}, mid::GetHead, 0, 3), {-a, a, 0});
+  expect_near(queried_floats(d, {}, mid::GetLeft, 0, 3), {0, 0, 1});
+  expect_near(queried_floats(d, {}, mid::GetUp, 0, 3), {a, a, 0});
+  expect_near(queried_floats(d, {}, mid::GetLeft, 1, 3), {0, 0, -1});
+  expect_near(queried_floats(d, {}, mid::GetUp, 1, 3), {0, 1, 0});
   // H vertical: every roll has H and U in a vertical plane; nothing changes.
   // RollL(20) turned U = (0,0,1) toward L = (-1,0,0): (-sin 20, 0, cos 20).
-  expect_near(module_floats(d, mid::GetUp, 2, 3), {-0.34202014f, 0, 0.93969262f});
+  expect_near(queried_floats(d, {}, mid::GetUp, 2, 3), {-0.34202014f, 0, 0.93969262f});
 }
 
 // Every primitive knows its module: F(1) at index 0, the branch's F at 3;
@@ -226,8 +220,8 @@ TEST(TurtleProvenance, IndexAndIdOfTheModule) {
                         "axiom: F(1) SB Left(30) F(1) EB A Sphere(1);\n"
                         "interpretation:\n"
                         "A() : { produce F(1) Circle(1) F(1); }\n");
-  sim->derivation().run(0);
-  Scene s = turtle::interpret_scene(sim->derivation(), {});
+  sim->run(0);
+  Scene s = sim->scene(0);
   ASSERT_EQ(s.segments.size(), 4u);
   EXPECT_EQ(s.segments[0].from.module_index, 0u);
   EXPECT_EQ(s.segments[1].from.module_index, 3u);

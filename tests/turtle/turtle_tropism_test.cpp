@@ -72,10 +72,9 @@ TEST(TurtleTropism, TorqueTwistsAroundTheHeading) {
   turtle::TurtleSettings settings = toward_x(0.5f);
   settings.tropisms[0].torque = true;
   auto sim = load_model("torque", "derivation length: 0;\naxiom: F(1) GetHead(0,0,0) GetUp(0,0,0);\n");
-  sim->derivation().run(0);
-  turtle::fill_query_modules(sim->derivation(), settings);
-  expect_near(module_floats(sim->derivation(), mid::GetHead, 0, 3), {0, 1, 0});
-  expect_near(module_floats(sim->derivation(), mid::GetUp, 0, 3), {0.47942554f, 0, 0.87758256f});
+  sim->run(0);
+  expect_near(queried_floats(*sim, settings, mid::GetHead, 0, 3), {0, 1, 0});
+  expect_near(queried_floats(*sim, settings, mid::GetUp, 0, 3), {0.47942554f, 0, 0.87758256f});
 }
 
 }  // namespace

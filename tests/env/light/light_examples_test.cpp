@@ -226,7 +226,7 @@ TEST(LightExamples, CloverFieldGetsCloversLight) {
   options.environment.comm_file = e_file;
   options.environment.field = recorder;
   Simulation simulation(folder + "/clover-field.l", options);
-  simulation.derivation().run(40);
+  simulation.run(40);
   ASSERT_EQ(recorder->passes.size(), 40u);  // one before each step
 
   CloverFieldRule rule;
