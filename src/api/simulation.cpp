@@ -9,7 +9,7 @@
 #include "turtle/cpfg_symbols.h"
 #include "turtle/interpreter.h"
 #include "env/environment.h"
-#include "io/input_text.h"
+#include "inputs/input_text.h"
 #include "lang/translator.h"
 #include "support/diagnostic.h"
 #include "support/repeated_warnings.h"

@@ -13,7 +13,7 @@
 #include "derive/derivation.h"
 #include "env/field.h"
 #include "geometry/scene.h"
-#include "io/input_files.h"
+#include "inputs/input_files.h"
 #include "turtle/turtle_settings.h"
 
 namespace sylva {
