@@ -7,6 +7,7 @@
 
 #include "inputs/input_text.h"
 #include "inputs/preprocessor.h"
+#include "support/default_compiler.h"
 
 namespace sylva::io {
 
@@ -227,7 +228,7 @@ BackgroundScene read_background_scene(const std::vector<std::string>& paths, con
   Builder builder(out, from_materials);
   for (const std::string& path : paths) {
     read_input_file(path, "background scene file");
-    for (const SceneCommand& c : commands(path, compiler.empty() ? default_preprocessor() : compiler)) builder.run(c);
+    for (const SceneCommand& c : commands(path, compiler.empty() ? default_compiler() : compiler)) builder.run(c);
   }
   return out;
 }

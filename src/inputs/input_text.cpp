@@ -4,22 +4,23 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+
+#include "support/whole_file.h"
 
 namespace sylva::io {
 
 namespace fs = std::filesystem;
 
 std::string read_input_file(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw ModelError(SourceLocation{path, 0, 0}, "cannot open the " + what + ": it is a folder");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(SourceLocation{path, 0, 0}, "cannot open the " + what);
-  std::stringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw ModelError(SourceLocation{path, 0, 0}, "cannot read the " + what);
-  return s.str();
+  WholeFile file = read_whole_file(path);
+  switch (file.failure) {
+    case WholeFile::Failure::None: return std::move(file.bytes);
+    case WholeFile::Failure::IsFolder:
+      throw ModelError(SourceLocation{path, 0, 0}, "cannot open the " + what + ": it is a folder");
+    case WholeFile::Failure::CannotOpen: throw ModelError(SourceLocation{path, 0, 0}, "cannot open the " + what);
+    case WholeFile::Failure::CannotRead: break;
+  }
+  throw ModelError(SourceLocation{path, 0, 0}, "cannot read the " + what);
 }
 
 std::string extension_of(const std::string& path) {

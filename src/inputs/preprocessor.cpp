@@ -1,29 +1,14 @@
 #include "inputs/preprocessor.h"
 
-#include <cstdlib>
 #include <regex>
 
 #include "support/diagnostic.h"
+#include "support/line_marker.h"
 #include "support/subprocess.h"
 
 namespace sylva::io {
 
-std::string default_preprocessor() {
-  for (const char* name : {"SYLVA_CXX", "CXX"})
-    if (const char* value = std::getenv(name); value && *value) return value;
-  return "g++";
-}
-
 namespace {
-
-std::string unescape_marker_name(std::string_view quoted) {
-  std::string name;
-  for (std::size_t i = 0; i < quoted.size(); ++i) {
-    if (quoted[i] == '\\' && i + 1 < quoted.size()) ++i;
-    name += quoted[i];
-  }
-  return name;
-}
 
 [[noreturn]] void preprocessor_failed(const std::string& path, const std::string& compiler, const ProcessResult& result) {
   if (result.exit_code == -1 && result.err.starts_with("cannot run"))
@@ -55,7 +40,6 @@ std::vector<PreprocessedLine> preprocess_file(const std::string& path, const std
   std::string argument = path.starts_with("-") ? "./" + path : path;
   ProcessResult result = run_process({compiler, "-E", "-x", "c++", "-std=c++17", "-w", argument});
   if (result.exit_code != 0) preprocessor_failed(path, compiler, result);
-  static const std::regex marker(R"(^#\s*(?:line\s+)?(\d+)\s+"((?:[^"\\]|\\.)*)\".*$)");
   std::vector<PreprocessedLine> lines;
   std::string file = path;
   int line_number = 1;
@@ -66,12 +50,10 @@ std::vector<PreprocessedLine> preprocess_file(const std::string& path, const std
     if (end == std::string::npos) end = out.size();
     std::string text = out.substr(start, end - start);
     start = end + 1;
-    std::smatch m;
     if (!text.empty() && text[0] == '#') {
-      if (std::regex_match(text, m, marker)) {
-        line_number = std::stoi(m[1].str());
-        file = unescape_marker_name(m[2].str());
-        if (file == argument) file = path;
+      if (std::optional<LineMarker> marker = parse_line_marker(text)) {
+        line_number = marker->line;
+        file = marker->file == argument ? path : marker->file;
       }
       continue;  // a marker, or a #pragma the preprocessor kept
     }

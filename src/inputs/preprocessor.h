@@ -11,9 +11,6 @@
 
 namespace sylva::io {
 
-// $SYLVA_CXX, $CXX, then g++: the compiler models are built with.
-std::string default_preprocessor();
-
 struct PreprocessedLine {
   std::string file;  // as the line markers name it (#included files by their path)
   int line = 0;

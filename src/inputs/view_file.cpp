@@ -3,6 +3,7 @@
 #include "inputs/input_text.h"
 #include "inputs/preprocessor.h"
 #include "inputs/view_parser.h"
+#include "support/default_compiler.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
@@ -287,7 +288,7 @@ ViewFile read_view_file(const std::string& path, const std::string& compiler, Vi
   view.dialect = dialect;
   Parser parser(view);
   OriginalColumns columns;
-  for (const PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_preprocessor() : compiler)) {
+  for (const PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_compiler() : compiler)) {
     std::optional<Command> c = split_command(line.text, line.line);
     if (!c) continue;
     columns.restore(c->name_word, line.file, line.line);
