@@ -29,7 +29,7 @@
 
 #include "geometry/material.h"
 #include "geometry/scene.h"
-#include "io/png_renderer.h"
+#include "render/png_renderer.h"
 
 namespace {
 
@@ -90,7 +90,7 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, sylva::io::RenderMode mode,
+void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, sylva::geometry::RenderMode mode,
                   int antialiasing) {
   const Scene scene = plant(style == sylva::geometry::LineStyle::Pixel);
   const double scene_rss_mb = peak_rss_mb();
@@ -133,7 +133,7 @@ void render_plant(benchmark::State& state, sylva::geometry::LineStyle style, syl
 
 void register_render_benchmarks() {
   using sylva::geometry::LineStyle;
-  using sylva::io::RenderMode;
+  using sylva::geometry::RenderMode;
   struct Case {
     const char* name;
     LineStyle style;

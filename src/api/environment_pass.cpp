@@ -130,14 +130,14 @@ class QueryCollector : public derive::InterpretedModuleVisitor {
     q.module.symbol = types_.name(id);
     q.module.parameters.resize(static_cast<std::size_t>(count));
     std::memcpy(q.module.parameters.data(), params, sizeof(float) * static_cast<std::size_t>(count));
-    q.turtle = turtle_state();
+    q.turtle = turtle_report();
     queries.push_back(std::move(q));
     targets.push_back(Target{id, in_string ? params : nullptr, place, count});
   }
 
-  env::TurtleState turtle_state() const {
+  env::TurtleReport turtle_report() const {
     const turtle::TurtleInterpreter::Pose pose = turtle_.pose();
-    env::TurtleState t;
+    env::TurtleReport t;
     t.position = {pose.position.x, pose.position.y, pose.position.z};
     t.heading = {pose.heading.x, pose.heading.y, pose.heading.z};
     t.left = {pose.left.x, pose.left.y, pose.left.z};

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "geometry/curve_cpfg.h"
-#include "io/input_files.h"
+#include "inputs/input_files.h"
 
 namespace sylva {
 

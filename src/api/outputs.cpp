@@ -5,12 +5,13 @@
 #include <filesystem>
 #include <set>
 
+#include "export/mesh_writers.h"
 #include "geometry/back_sides.h"
 #include "geometry/tessellation.h"
-#include "io/input_text.h"
-#include "io/mesh_writers.h"
-#include "io/png_renderer.h"
-#include "io/vector_writer.h"
+#include "inputs/input_text.h"
+#include "inputs/label_font.h"
+#include "render/png_renderer.h"
+#include "render/vector_writer.h"
 #include "support/diagnostic.h"
 
 namespace sylva {

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "io/input_text.h"
+#include "inputs/input_text.h"
 
 namespace sylva {
 namespace {

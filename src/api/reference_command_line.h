@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_files.h"
+#include "inputs/input_files.h"
 
 namespace sylva {
 

@@ -13,7 +13,7 @@
 #include "build/model_library.h"
 #include "derive/derivation.h"
 #include "env/environment.h"
-#include "io/input_text.h"
+#include "inputs/input_text.h"
 #include "io/output_file.h"
 #include "io/string_reader.h"
 #include "io/string_text.h"

@@ -23,7 +23,7 @@
 #include "build/model_builder.h"
 #include "env/field.h"
 #include "geometry/scene.h"
-#include "io/input_files.h"
+#include "inputs/input_files.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
 #include "sylva/abi.h"

@@ -10,8 +10,10 @@
 
 #include "lang/translator.h"
 #include "support/content_hash.h"
+#include "support/default_compiler.h"
 #include "support/diagnostic.h"
 #include "support/subprocess.h"
+#include "support/whole_file.h"
 
 #ifndef SYLVA_RUNTIME_INCLUDE_DIR
 #define SYLVA_RUNTIME_INCLUDE_DIR ""
@@ -36,23 +38,9 @@ std::string env_or(const char* name, const std::string& fallback) {
   return value && *value ? value : fallback;
 }
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Writes through a temporary file and a rename, so readers never see half a file.
-void write_file_atomically(const fs::path& path, const std::string& content) {
-  fs::path tmp = path;
-  tmp += ".tmp" + std::to_string(getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
-    if (!out) throw ModelError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
+// Whole or not at all, so a build running beside this one never reads half a file.
+void write_cache_file(const fs::path& path, const std::string& content) {
+  if (write_file_atomically(path.string(), content) != 0) throw ModelError("cannot write " + path.string());
 }
 
 // Size and modification time: enough to notice an edited file.
@@ -148,8 +136,6 @@ std::string compiler_messages(const std::string& err) {
 
 }  // namespace
 
-std::string default_compiler() { return env_or("SYLVA_CXX", env_or("CXX", "g++")); }
-
 std::string default_cache_dir() {
   if (const char* dir = std::getenv("SYLVA_CACHE_DIR"); dir && *dir) return dir;
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/sylva";
@@ -175,7 +161,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   fs::create_directories(r.cache_dir, ec);
   if (ec) throw ModelError("cannot create the model cache " + r.cache_dir.string() + ": " + ec.message());
 
-  std::string source = read_file(model_path);
+  std::string source = read_whole_file(model_path).bytes;
   fs::path manifest = r.cache_dir / (direct_key(model_path, source, r) + ".manifest");
   std::string library;
   std::vector<std::string> cached_warnings;
@@ -193,7 +179,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
 
   if (!fs::exists(so)) {
     fs::path ii = r.cache_dir / (key + ".ii");
-    write_file_atomically(ii, translation.cpp);
+    write_cache_file(ii, translation.cpp);
     fs::path tmp = so;
     tmp += ".tmp" + std::to_string(getpid());
     std::vector<std::string> argv = {r.compiler};
@@ -218,7 +204,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
     std::string path = fs::absolute(dep, ec).string();
     manifest_text += "dep " + file_stamp(path) + " " + path + "\n";
   }
-  write_file_atomically(manifest, manifest_text);
+  write_cache_file(manifest, manifest_text);
   return built;
 }
 

@@ -32,8 +32,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
 // The C++ the model translates to (what `sylva translate` prints).
 std::string translate_model(const std::string& model_path, const BuildOptions& options);
 
-// Defaults resolved from the environment.
-std::string default_compiler();
+// Defaults resolved from the environment (the compiler: support/default_compiler.h).
 std::string default_cache_dir();
 std::string default_runtime_include_dir();
 

@@ -80,8 +80,8 @@ class CommLibraryTransport : public Field {
     for (float& value : module.parameters) value = through_text(value, format);
   }
 
-  void carry_turtle(TurtleState& turtle) {
-    TurtleState& kept = last_turtle_;
+  void carry_turtle(TurtleReport& turtle) {
+    TurtleReport& kept = last_turtle_;
     through_format(spec_.position, turtle.position.data(), kept.position.data(), 3);
     through_format(spec_.heading, turtle.heading.data(), kept.heading.data(), 3);
     through_format(spec_.left, turtle.left.data(), kept.left.data(), 3);
@@ -121,7 +121,7 @@ class CommLibraryTransport : public Field {
   CommSpec spec_;
   ModelingProgram master_;
   std::function<void(const std::string&)> warn_;
-  TurtleState last_turtle_;
+  TurtleReport last_turtle_;
 };
 
 }  // namespace

@@ -1,12 +1,12 @@
 #include "env/comm_spec.h"
 
 #include <algorithm>
-#include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "env/keyword.h"
 #include "support/diagnostic.h"
+#include "support/whole_file.h"
 
 namespace sylva::env {
 namespace {
@@ -167,11 +167,9 @@ CommSpec CommSpec::everything() {
 CommSpec parse_comm_spec(const std::string& text, const std::string& path) { return SpecParser(text, path).parse(); }
 
 CommSpec read_comm_spec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(SourceLocation{path, 0, 0}, "cannot open the communication specification file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_comm_spec(text.str(), path);
+  const WholeFile file = read_whole_file(path);
+  if (!file) throw ModelError(SourceLocation{path, 0, 0}, "cannot open the communication specification file");
+  return parse_comm_spec(file.bytes, path);
 }
 
 }  // namespace sylva::env

@@ -329,7 +329,7 @@ std::string ExternalProgramField::encode_pass(std::span<const Query> queries, co
     out += "query " + std::to_string(q.id);
     append_module(out, q.module);
     out += '\n';
-    const TurtleState& t = q.turtle;
+    const TurtleReport& t = q.turtle;
     const float width[1] = {t.line_width}, scale[1] = {t.scale_factor};
     const float* values[] = {t.position.data(), t.heading.data(), t.left.data(), t.up.data(), width, scale};
     for (std::size_t k = 0; k < std::size(kTurtleLines); ++k) {

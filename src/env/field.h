@@ -28,11 +28,12 @@ namespace sylva::env {
 // The most parameters a communication module carries (EA20, cpfg CMAXPARAMS).
 inline constexpr int kMaxParameters = 20;
 
-// The turtle where a communication module was met. A count is the number of
+// The turtle as reported to the environment where a communication module was
+// met (the communication library's CTURTLE). A count is the number of
 // values of that field the .e file asks for (its format's conversions, e.g.
 // "turtle position: %g %g" gives 2); 0 means the field was not requested and
 // a program must not rely on it. Vectors are always filled in full.
-struct TurtleState {
+struct TurtleReport {
   std::array<float, 3> position{};
   std::array<float, 3> heading{};
   std::array<float, 3> left{};
@@ -65,7 +66,7 @@ struct Query {
   // for it ("following module: no"), the string ends, or the module was
   // produced by an interpretation rule.
   ModuleRecord following;
-  TurtleState turtle;
+  TurtleReport turtle;
 };
 
 // The reply to one query: value[i] replaces parameter i where set[i] is true.

@@ -1,12 +1,10 @@
 #include "io/string_reader.h"
 
 #include <cctype>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "support/diagnostic.h"
+#include "support/whole_file.h"
 
 namespace sylva::io {
 namespace {
@@ -128,18 +126,17 @@ namespace {
   throw ModelError(SourceLocation{path, 0, 0}, "cannot read the saved string: " + why);
 }
 
-// The file's text. A directory opens as a stream on Linux and reads as
-// nothing, so it is checked for by name; any other failed read is an error
-// too rather than an empty string.
+// The file's text; a folder or a failed read is an error rather than an
+// empty string.
 std::string read_text(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) cannot_read(path, "it is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) cannot_read(path, "no such file");
-  std::stringstream text;
-  text << in.rdbuf();
-  if (in.bad()) cannot_read(path, "the file could not be read");
-  return text.str();
+  WholeFile file = read_whole_file(path);
+  switch (file.failure) {
+    case WholeFile::Failure::None: return std::move(file.bytes);
+    case WholeFile::Failure::IsFolder: cannot_read(path, "it is a directory, not a file");
+    case WholeFile::Failure::CannotOpen: cannot_read(path, "no such file");
+    case WholeFile::Failure::CannotRead: break;
+  }
+  cannot_read(path, "the file could not be read");
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <optional>
 #include <sstream>
 
+#include "support/line_marker.h"
+
 namespace sylva::lang::cpfg {
 namespace {
 
@@ -135,17 +137,6 @@ class StatementState {
   std::size_t from_ = 0, done_ = 0;
 };
 
-// `# 12 "file" flags`: the preprocessor's line marker.
-bool line_marker(const std::string& raw, int* line, std::string* file) {
-  if (raw.size() < 3 || raw[0] != '#' || raw[1] != ' ' || !std::isdigit(static_cast<unsigned char>(raw[2])))
-    return false;
-  std::istringstream marker(raw.substr(2));
-  marker >> *line;
-  const std::size_t q = raw.find('"'), e = raw.find('"', q == std::string::npos ? 0 : q + 1);
-  if (q != std::string::npos && e != std::string::npos) *file = raw.substr(q + 1, e - q - 1);
-  return true;
-}
-
 }  // namespace
 
 std::vector<Line> read_logical_lines(const std::string& text, std::vector<std::string>& files,
@@ -166,12 +157,10 @@ std::vector<Line> read_logical_lines(const std::string& text, std::vector<std::s
   // The last line that had text: its file and line.
   int last_file = -1, last_line = 0;
   while (std::getline(in, raw)) {
-    int marker_line = 0;
-    std::string marker_file = file_name;
-    if (line_marker(raw, &marker_line, &marker_file)) {
-      file_name = marker_file;
+    if (std::optional<LineMarker> marker = parse_line_marker(raw)) {
+      file_name = marker->file;
       file = file_index(file_name);
-      line = marker_line;
+      line = marker->line;
       continue;
     }
     const int this_line = line++;

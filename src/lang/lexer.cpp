@@ -1,9 +1,11 @@
 #include <cctype>
 #include <cstring>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 
 #include "lang/token.h"
+#include "support/line_marker.h"
 
 namespace sylva::lang {
 namespace {
@@ -21,31 +23,12 @@ class Lexer {
  public:
   explicit Lexer(TokenStream& out) : out_(out) {}
 
-  void line_marker(std::string_view rest) {
-    // # <line> "<file>" <flags>
-    std::size_t i = 0;
-    while (i < rest.size() && rest[i] == ' ') ++i;
-    int line = 0;
-    while (i < rest.size() && std::isdigit(static_cast<unsigned char>(rest[i]))) line = line * 10 + (rest[i++] - '0');
-    while (i < rest.size() && rest[i] == ' ') ++i;
-    std::string file;
-    if (i < rest.size() && rest[i] == '"') {
-      ++i;
-      while (i < rest.size() && rest[i] != '"') {
-        if (rest[i] == '\\' && i + 1 < rest.size()) ++i;
-        file += rest[i++];
-      }
-      ++i;
-    }
-    bool system = false, entering = false;
-    for (; i < rest.size(); ++i) {
-      if (rest[i] == '3') system = true;
-      if (rest[i] == '1' && (i == 0 || rest[i - 1] == ' ')) entering = true;
-    }
+  void line_marker(const LineMarker& marker) {
+    const std::string& file = marker.file;
     current_file_ = file_index(file);
-    current_line_ = line;
-    system_ = system;
-    if (entering && is_lpfgall(file)) lpfgall_seen_ = true;
+    current_line_ = marker.line;
+    system_ = marker.system_header;
+    if (marker.enters_file && is_lpfgall(file)) lpfgall_seen_ = true;
     if (!file.empty() && file[0] != '<') note_dependency(file);
   }
 
@@ -200,9 +183,8 @@ TokenStream tokenize_preprocessed(const std::string& text, bool* lpfgall_seen) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
     std::string_view line(text.data() + pos, end - pos);
-    if (line.size() >= 2 && line[0] == '#' && line[1] == ' ' && line.size() > 2 &&
-        std::isdigit(static_cast<unsigned char>(line[2]))) {
-      lexer.line_marker(line.substr(1));
+    if (std::optional<LineMarker> marker = parse_line_marker(line)) {
+      lexer.line_marker(*marker);
     } else {
       lexer.source_line(line);
     }

@@ -1,7 +1,7 @@
 #include "lang/translator.h"
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -10,7 +10,9 @@
 #include "lang/lc_parser.h"
 #include "lang/token.h"
 #include "support/diagnostic.h"
+#include "support/line_marker.h"
 #include "support/subprocess.h"
+#include "support/whole_file.h"
 
 namespace sylva::lang {
 namespace fs = std::filesystem;
@@ -20,12 +22,11 @@ namespace {
 std::string read_model_file(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw ModelError(SourceLocation{path, 0, 0}, "no such file");
-  if (fs::is_directory(path, ec)) throw ModelError(SourceLocation{path, 0, 0}, "is a directory, not a model file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(SourceLocation{path, 0, 0}, "cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  WholeFile file = read_whole_file(path);
+  if (file.failure == WholeFile::Failure::IsFolder)
+    throw ModelError(SourceLocation{path, 0, 0}, "is a directory, not a model file");
+  if (!file) throw ModelError(SourceLocation{path, 0, 0}, "cannot be read");
+  return std::move(file.bytes);
 }
 
 // The preprocessor's complaints already carry file:line:column; keep them.
@@ -42,12 +43,9 @@ std::vector<std::string> marker_files(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
-    if (line.size() < 4 || line[0] != '#' || line[1] != ' ') continue;
-    const std::size_t q = line.find('"'), e = line.rfind('"');
-    if (q == std::string::npos || e <= q) continue;
-    std::string name = line.substr(q + 1, e - q - 1);
-    if (name.empty() || name[0] == '<') continue;
-    if (seen.insert(name).second) files.push_back(name);
+    std::optional<LineMarker> marker = parse_line_marker(line);
+    if (!marker || marker->file.empty() || marker->file[0] == '<') continue;
+    if (seen.insert(marker->file).second) files.push_back(marker->file);
   }
   return files;
 }

@@ -33,7 +33,7 @@ class EchoField : public env::Field {
     steps.push_back(step);
     passes.emplace_back(queries.begin(), queries.end());
     for (std::size_t k = 0; k < queries.size(); ++k) {
-      const env::TurtleState& t = queries[k].turtle;
+      const env::TurtleReport& t = queries[k].turtle;
       std::vector<float> values;
       for (const std::array<float, 3>* v : {&t.position, &t.heading, &t.left, &t.up})
         values.insert(values.end(), v->begin(), v->end());

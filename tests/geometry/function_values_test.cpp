@@ -8,7 +8,7 @@
 #include <string>
 
 #include "geometry/function.h"
-#include "io/function_file.h"
+#include "inputs/function_file.h"
 #include "test_support.h"
 
 namespace sylva::geometry {

@@ -7,13 +7,13 @@
 #include <fstream>
 #include <string>
 
+#include "export/mesh_writers.h"
+#include "export/tiny_gltf_setup.h"
 #include "geometry/patch_mesh.h"
 #include "geometry/tessellation.h"
-#include "io/mesh_writers.h"
-#include "io/png_renderer.h"
+#include "inputs/view_file.h"
 #include "io/texture_image.h"
-#include "io/tiny_gltf_setup.h"
-#include "io/view_file.h"
+#include "render/png_renderer.h"
 #include "support/diagnostic.h"
 #include "test_support.h"
 #include "turtle/turtle_fixture.h"

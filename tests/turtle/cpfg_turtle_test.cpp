@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
+#include "inputs/view_file.h"
 #include "io/string_text.h"
-#include "io/view_file.h"
 #include "turtle/cpfg_symbols.h"
 #include "turtle/turtle_fixture.h"
 

@@ -148,7 +148,7 @@ class Arvo : public Field {
 
   void answer(std::span<const Query> queries, std::span<Answer> answers, int step) override {
     if (queries.empty()) return;
-    const TurtleState& first = queries[0].turtle;
+    const TurtleReport& first = queries[0].turtle;
     require_turtle_values(invocation_, kProgram, "turtle position", first.position_count, 3);
     require_turtle_values(invocation_, kProgram, "turtle heading", first.heading_count, 3);
 

@@ -1,7 +1,6 @@
 #include "env/programs/arvo_background_file.h"
 
 #include <cctype>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -10,6 +9,7 @@
 #include "env/keyword.h"
 #include "env/programs/parameter_file.h"
 #include "support/diagnostic.h"
+#include "support/whole_file.h"
 
 namespace sylva::env::arvo {
 namespace {
@@ -246,11 +246,9 @@ class BackgroundReader {
 }  // namespace
 
 void read_background_file(const std::filesystem::path& path, ObstacleScene& scene) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(SourceLocation{path.string(), 0, 0}, "cannot open the arvo obstacles file");
-  std::stringstream content;
-  content << in.rdbuf();
-  BackgroundReader(path.string(), tokenize(path.string(), content.str()), scene).read();
+  const WholeFile file = read_whole_file(path.string());
+  if (!file) throw ModelError(SourceLocation{path.string(), 0, 0}, "cannot open the arvo obstacles file");
+  BackgroundReader(path.string(), tokenize(path.string(), file.bytes), scene).read();
 }
 
 }  // namespace sylva::env::arvo

@@ -1,13 +1,12 @@
 #include "env/programs/clover_image.h"
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include "env/programs/sgi_image.h"
+#include "support/whole_file.h"
 
 // stb_image's functions are compiled into this file only (static), so they
 // cannot clash with another copy elsewhere in the program.
@@ -41,9 +40,9 @@ struct Planes {
 };
 
 std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the file");
-  return std::vector<std::uint8_t>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const WholeFile file = read_whole_file(path.string());
+  if (!file) throw std::runtime_error("cannot read the file");
+  return std::vector<std::uint8_t>(file.bytes.begin(), file.bytes.end());
 }
 
 // Decodes with stb_image into RGB, top row first.

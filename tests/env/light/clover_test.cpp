@@ -13,7 +13,7 @@
 
 #include "env/light/light_test_support.h"
 #include "env/programs/programs.h"
-#include "io/png_renderer.h"
+#include "render/png_renderer.h"
 
 namespace sylva::test::light {
 namespace {

@@ -1,0 +1,263 @@
+// SVG is written as plain text so that every element can say which module
+// made it (cairo's SVG surface has no way to add attributes); PDF and
+// PostScript go through cairo. Both draw the same projected Drawing.
+#include "render/vector_writer.h"
+
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "io/output_file.h"
+#include "render/vector_drawing.h"
+#include "support/diagnostic.h"
+
+namespace sylva::io {
+
+namespace {
+
+enum class Format { Svg, Pdf, Ps, Eps };
+
+constexpr float kSeamStroke = 0.5f;  // pixels; see Shape::hide_seams
+
+// Three decimals are a thousandth of a pixel: finer than any output shows.
+std::string num(float v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3f", static_cast<double>(v));
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string hex_color(geometry::Rgb c) {
+  auto byte = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return buf;
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+const char* cap_name(LineCap cap) {
+  switch (cap) {
+    case LineCap::Butt: return "butt";
+    case LineCap::Square: return "square";
+    case LineCap::Round: break;
+  }
+  return "round";
+}
+
+// fill="..." or stroke="..." with its opacity when not opaque.
+std::string paint(const char* attribute, const Shape& s) {
+  std::string out = std::string(" ") + attribute + "=\"" + hex_color(s.color) + "\"";
+  if (s.opacity < 1) out += std::string(" ") + attribute + "-opacity=\"" + num(s.opacity) + "\"";
+  return out;
+}
+
+void svg_shape(std::string& out, const Shape& s, const Drawing& d) {
+  using Kind = Shape::Kind;
+  // Filled shapes, or outlines of a width (circles drawn with CircleB).
+  auto fill_or_outline = [&] {
+    if (s.stroke > 0) return std::string(" fill=\"none\"") + paint("stroke", s) + " stroke-width=\"" + num(s.stroke) + "\"";
+    std::string a = paint("fill", s);
+    if (s.hide_seams) a += paint("stroke", s) + " stroke-width=\"" + num(kSeamStroke) + "\" stroke-linejoin=\"round\"";
+    return a;
+  };
+  switch (s.kind) {
+    case Kind::Line:
+      out += "<line x1=\"" + num(s.points[0].x) + "\" y1=\"" + num(s.points[0].y) + "\" x2=\"" + num(s.points[1].x) +
+             "\" y2=\"" + num(s.points[1].y) + "\"" + paint("stroke", s) + " stroke-width=\"" + num(s.stroke) +
+             "\" stroke-linecap=\"" + cap_name(d.line_cap) + "\"/>\n";
+      break;
+    case Kind::Polygon:
+      if (s.loop_ends.empty()) {
+        out += "<polygon points=\"";
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+          out += (i ? " " : "") + num(s.points[i].x) + "," + num(s.points[i].y);
+        out += "\"" + fill_or_outline() + "/>\n";
+      } else {
+        out += "<path d=\"";
+        std::size_t i = 0;
+        for (std::uint32_t end : s.loop_ends) {
+          for (std::size_t first = i; i < end; ++i)
+            out += (i == first ? "M" : " L") + num(s.points[i].x) + " " + num(s.points[i].y);
+          out += " Z ";
+        }
+        out.pop_back();
+        out += "\" fill-rule=\"evenodd\"" + fill_or_outline() + "/>\n";
+      }
+      break;
+    case Kind::Circle:
+      out += "<circle cx=\"" + num(s.points[0].x) + "\" cy=\"" + num(s.points[0].y) + "\" r=\"" + num(s.radius) + "\"" +
+             fill_or_outline() + "/>\n";
+      break;
+    case Kind::Text:
+      out += "<text x=\"" + num(s.points[0].x) + "\" y=\"" + num(s.points[0].y) +
+             "\" font-family=\"Courier, monospace\" font-weight=\"bold\" font-size=\"" + num(d.font_size) + "\"" +
+             paint("fill", s) + ">" + xml_escape(s.text) + "</text>\n";
+      break;
+  }
+}
+
+std::string svg_document(const Drawing& d, const ModuleTypes* types) {
+  std::string out;
+  out.reserve(128 + d.shapes.size() * 96);
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(d.width) +
+         "\" height=\"" + std::to_string(d.height) + "\" viewBox=\"0 0 " + std::to_string(d.width) + " " +
+         std::to_string(d.height) + "\">\n";
+  out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(d.width) + "\" height=\"" + std::to_string(d.height) +
+         "\" fill=\"" + hex_color(d.background) + "\"/>\n";
+  // One group per run of shapes made by the same module; the painter's order
+  // may split a module's shapes into several runs.
+  const Shape* run = nullptr;
+  for (const Shape& s : d.shapes) {
+    if (!run || s.from.module_index != run->from.module_index || s.from.module_id != run->from.module_id) {
+      if (run) out += "</g>\n";
+      out += "<g data-index=\"" + std::to_string(s.from.module_index) + "\" data-module-id=\"" +
+             std::to_string(s.from.module_id) + "\"";
+      if (types && s.from.module_id < types->size())
+        out += " data-module=\"" + xml_escape(types->name(s.from.module_id)) + "\"";
+      out += ">\n";
+      run = &s;
+    }
+    svg_shape(out, s, d);
+  }
+  if (run) out += "</g>\n";
+  out += "</svg>\n";
+  return out;
+}
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+void cairo_path_of(cairo_t* cr, const Shape& s) {
+  std::size_t i = 0;
+  std::vector<std::uint32_t> ends = s.loop_ends;
+  if (ends.empty()) ends.push_back(static_cast<std::uint32_t>(s.points.size()));
+  for (std::uint32_t end : ends) {
+    for (std::size_t first = i; i < end; ++i) {
+      if (i == first) cairo_move_to(cr, s.points[i].x, s.points[i].y);
+      else cairo_line_to(cr, s.points[i].x, s.points[i].y);
+    }
+    cairo_close_path(cr);
+  }
+}
+
+void cairo_shape(cairo_t* cr, const Shape& s, const Drawing& d) {
+  using Kind = Shape::Kind;
+  cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.opacity);
+  auto fill_or_outline = [&] {
+    if (s.stroke > 0) {
+      cairo_set_line_width(cr, s.stroke);
+      cairo_stroke(cr);
+    } else if (s.hide_seams) {
+      cairo_fill_preserve(cr);
+      cairo_set_line_width(cr, kSeamStroke);
+      cairo_stroke(cr);
+    } else {
+      cairo_fill(cr);
+    }
+  };
+  switch (s.kind) {
+    case Kind::Line:
+      cairo_set_line_width(cr, s.stroke);
+      cairo_set_line_cap(cr, d.line_cap == LineCap::Butt     ? CAIRO_LINE_CAP_BUTT
+                             : d.line_cap == LineCap::Square ? CAIRO_LINE_CAP_SQUARE
+                                                             : CAIRO_LINE_CAP_ROUND);
+      cairo_move_to(cr, s.points[0].x, s.points[0].y);
+      cairo_line_to(cr, s.points[1].x, s.points[1].y);
+      cairo_stroke(cr);
+      break;
+    case Kind::Polygon:
+      cairo_path_of(cr, s);
+      fill_or_outline();
+      break;
+    case Kind::Circle:
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, s.points[0].x, s.points[0].y, s.radius, 0, 2 * M_PI);
+      fill_or_outline();
+      break;
+    case Kind::Text:
+      cairo_move_to(cr, s.points[0].x, s.points[0].y);
+      cairo_show_text(cr, s.text.c_str());
+      cairo_new_path(cr);
+      break;
+  }
+}
+
+std::string cairo_document(const Drawing& d, Format format, const std::string& path) {
+  std::string out;
+  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+  using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+  Surface surface(format == Format::Pdf
+                      ? cairo_pdf_surface_create_for_stream(append_to_string, &out, d.width, d.height)
+                      : cairo_ps_surface_create_for_stream(append_to_string, &out, d.width, d.height),
+                  cairo_surface_destroy);
+  if (format == Format::Pdf) cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "Sylva");
+  if (format == Format::Eps) cairo_ps_surface_set_eps(surface.get(), 1);
+  {
+    Context cr(cairo_create(surface.get()), cairo_destroy);
+    cairo_set_line_join(cr.get(), CAIRO_LINE_JOIN_ROUND);
+    cairo_select_font_face(cr.get(), "Courier", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr.get(), d.font_size);
+    cairo_set_fill_rule(cr.get(), CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_set_source_rgb(cr.get(), d.background.r, d.background.g, d.background.b);
+    cairo_paint(cr.get());
+    for (const Shape& s : d.shapes) cairo_shape(cr.get(), s, d);
+    cairo_show_page(cr.get());
+  }
+  cairo_surface_finish(surface.get());
+  cairo_status_t status = cairo_surface_status(surface.get());
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot draw the file: ") + cairo_status_to_string(status));
+  return out;
+}
+
+Format format_of(const std::string& path) {
+  if (path == "-") return Format::Svg;
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".svg") return Format::Svg;
+  if (ext == ".pdf") return Format::Pdf;
+  if (ext == ".ps") return Format::Ps;
+  if (ext == ".eps") return Format::Eps;
+  throw ModelError(SourceLocation{path, 0, 0},
+                   "unknown vector drawing format '" + ext + "': expected .svg, .pdf, .ps or .eps");
+}
+
+}  // namespace
+
+void write_vector_drawing(const std::string& path, const geometry::Scene& scene, const geometry::Palette& palette,
+                          const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
+                          const ModuleTypes* types, int ps_linecap) {
+  const Format format = format_of(path);
+  const LineCap cap = ps_linecap == 0 ? LineCap::Butt : ps_linecap == 2 ? LineCap::Square : LineCap::Round;
+  const Drawing drawing = project_scene(scene, palette, view, line_style, width, height, cap);
+  write_output_file(path, format == Format::Svg ? svg_document(drawing, types) : cairo_document(drawing, format, path));
+}
+
+}  // namespace sylva::io

@@ -1,0 +1,12 @@
+// The C++ compiler models are built with and input files are preprocessed
+// with, when none is named.
+#pragma once
+
+#include <string>
+
+namespace sylva {
+
+// $SYLVA_CXX, then $CXX, then g++ (an empty variable counts as unset).
+std::string default_compiler();
+
+}  // namespace sylva
