@@ -65,6 +65,15 @@ ProcessResult run_bad_model(const std::string& dir, const std::string& text) {
   return run_sylva({"run", "model.l", "--string", "out.txt"}, dir);
 }
 
+// A(START), START given with -D.
+const char* const kNeedsStart =
+    "#ifndef START\n"
+    "#error START is not defined\n"
+    "#endif\n"
+    "module A(float);\n"
+    "axiom: A(START);\n"
+    "derivation length: 0;\n";
+
 // ---- bad input ------------------------------------------------------------------
 
 // A model that fails: stderr has a line that begins with `prefix` and says
@@ -133,14 +142,7 @@ const std::vector<BadModel> kBadModels = {
      "axiom: A(1);\n",
      "model.l:2:8: error: ", "'F' is a predefined module"},
     // Without -D START, the model's own #error is reported where it stands.
-    {"PreprocessorError",
-     "#ifndef START\n"
-     "#error START is not defined\n"
-     "#endif\n"
-     "module A(float);\n"
-     "axiom: A(START);\n"
-     "derivation length: 0;\n",
-     "model.l:2:", "START is not defined"},
+    {"PreprocessorError", kNeedsStart, "model.l:2:", "START is not defined"},
 };
 
 class CliBadModel : public ::testing::TestWithParam<BadModel> {};
@@ -254,15 +256,6 @@ struct GoodRun {
   std::optional<std::string> err = std::nullopt;  // the whole of stderr
   std::string err_part = "";                       // a part of stderr
 };
-
-// START from -D.
-const char* const kNeedsStart =
-    "#ifndef START\n"
-    "#error START is not defined\n"
-    "#endif\n"
-    "module A(float);\n"
-    "axiom: A(START);\n"
-    "derivation length: 0;\n";
 
 const std::vector<GoodRun> kGoodRuns = {
     // The string goes to standard output by default, or with --string -.
