@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -64,152 +65,137 @@ ProcessResult run_bad_model(const std::string& dir, const std::string& text) {
   return run_sylva({"run", "model.l", "--string", "out.txt"}, dir);
 }
 
+// A(START), START given with -D.
+const char* const kNeedsStart =
+    "#ifndef START\n"
+    "#error START is not defined\n"
+    "#endif\n"
+    "module A(float);\n"
+    "axiom: A(START);\n"
+    "derivation length: 0;\n";
+
 // ---- bad input ------------------------------------------------------------------
 
-TEST(CliErrors, UndeclaredModuleInPredecessor) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "axiom: A(1);\n"
-                                  "A(x) : { produce A(x); }\n"
-                                  "  B(x) : { produce A(x); }\n");  // B: line 4, column 3
-  EXPECT_TRUE(FailsWith(r, "model.l:4:3: error: ", "undeclared module 'B'"));
+// A model that fails: stderr has a line that begins with `prefix` and says
+// `what`; the position in the prefix is counted by hand in the text.
+struct BadModel {
+  std::string name;
+  std::string text;
+  std::string prefix;
+  std::string what;
+};
+
+const std::vector<BadModel> kBadModels = {
+    {"UndeclaredModuleInPredecessor",
+     "module A(float);\n"
+     "axiom: A(1);\n"
+     "A(x) : { produce A(x); }\n"
+     "  B(x) : { produce A(x); }\n",  // B: line 4, column 3
+     "model.l:4:3: error: ", "undeclared module 'B'"},
+    {"UndeclaredModuleInAxiom",
+     "module A(float);\n"
+     "\n"
+     "axiom: A(1) Q(2);\n",  // Q: line 3, column 13
+     "model.l:3:13: error: ", "undeclared module 'Q'"},
+    {"UndeclaredModuleInProduce",
+     "module A(float);\n"
+     "axiom: A(1);\n"
+     "A(x) :\n"
+     "{\n"
+     "  produce A(x) Q(x);\n"  // Q: line 5, column 16
+     "}\n",
+     "model.l:5:16: error: ", "undeclared module 'Q'"},
+    {"WrongParameterCountInAxiom",
+     "module A(float);\n"
+     "axiom: F(1) A(1, 2);\n",  // A: line 2, column 13
+     "model.l:2:13: error: ", "module 'A' has 1 parameter but is given 2"},
+    {"WrongParameterCountInProduce",
+     "module A(float, float);\n"
+     "axiom: A(1, 2);\n"
+     "A(x, y) : { produce F(1) A(x); }\n",  // A: line 3, column 26
+     "model.l:3:26: error: ", "module 'A' has 2 parameters but is given 1"},
+    {"WrongParameterCountInPredecessor",
+     "module A(float);\n"
+     "axiom: A(1);\n"
+     "A(x) : { produce A(x); }\n"
+     "    A(x, y) : { produce A(x); }\n",  // A: line 4, column 5
+     "model.l:4:5: error: ", "module 'A' has 1 parameter but the predecessor names 2"},
+    {"MissingSemicolonAfterModuleDeclaration",
+     "module A(float)\n"
+     "axiom: A(1);\n",  // reported at 'axiom': line 2, column 1
+     "model.l:2:1: error: ", "expected ';' after the declaration of module 'A'"},
+    {"UnterminatedParameterList",
+     "module A(float);\n"
+     "module B(float",  // the file ends after 'float': line 2, column 15
+     "model.l:2:15: error: ", "expected ')'"},
+    {"UnterminatedBody",
+     "module A(float);\n"
+     "axiom: A(1);\n"
+     "A(x) : {\n"  // the body's '{': line 3, column 8
+     "  if (x > 0) {\n"
+     "    produce A(x + 1);\n"
+     "  }\n",
+     "model.l:3:8: error: ", "expected '}'"},
+    {"PredefinedModuleRedeclared",
+     "module A(float);\n"
+     "module F(float);\n"  // F: line 2, column 8
+     "axiom: A(1);\n",
+     "model.l:2:8: error: ", "'F' is a predefined module"},
+    // Without -D START, the model's own #error is reported where it stands.
+    {"PreprocessorError", kNeedsStart, "model.l:2:", "START is not defined"},
+};
+
+class CliBadModel : public ::testing::TestWithParam<BadModel> {};
+
+TEST_P(CliBadModel, FailsWithItsPositionAndWritesNothing) {
+  const std::string dir = make_temp_dir("cli-bad-" + GetParam().name);
+  const ProcessResult r = run_bad_model(dir, GetParam().text);
+  EXPECT_TRUE(FailsWith(r, GetParam().prefix, GetParam().what));
   EXPECT_TRUE(NothingWritten(dir, "out.txt"));
 }
 
-TEST(CliErrors, UndeclaredModuleInAxiom) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "\n"
-                                  "axiom: A(1) Q(2);\n");  // Q: line 3, column 13
-  EXPECT_TRUE(FailsWith(r, "model.l:3:13: error: ", "undeclared module 'Q'"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
+INSTANTIATE_TEST_SUITE_P(Table, CliBadModel, ::testing::ValuesIn(kBadModels),
+                         [](const ::testing::TestParamInfo<BadModel>& info) { return info.param.name; });
 
-TEST(CliErrors, UndeclaredModuleInProduce) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "axiom: A(1);\n"
-                                  "A(x) :\n"
-                                  "{\n"
-                                  "  produce A(x) Q(x);\n"  // Q: line 5, column 16
-                                  "}\n");
-  EXPECT_TRUE(FailsWith(r, "model.l:5:16: error: ", "undeclared module 'Q'"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
+// A command line that fails, run in a folder that holds a model (model.l) and
+// a folder named like one (plant.l).
+struct BadCommandLine {
+  std::string name;
+  std::vector<std::string> args;
+  std::string prefix;
+  std::string what;
+};
 
-TEST(CliErrors, WrongParameterCountInAxiom) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "axiom: F(1) A(1, 2);\n");  // A: line 2, column 13
-  EXPECT_TRUE(FailsWith(r, "model.l:2:13: error: ", "module 'A' has 1 parameter but is given 2"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
+const std::vector<BadCommandLine> kBadCommandLines = {
+    {"MissingModelFile", {"run", "absent.l", "--string", "out.txt"}, "absent.l: error: ", "no such file"},
+    {"MissingModelFileTranslated", {"translate", "absent.l"}, "absent.l: error: ", "no such file"},
+    {"DirectoryAsModel", {"run", "plant.l", "--string", "out.txt"}, "plant.l: error: ", "is a directory"},
+    {"DirectoryAsModelTranslated", {"translate", "plant.l"}, "plant.l: error: ", "is a directory"},
+    {"UnknownOption", {"run", "model.l", "--string", "out.txt", "--bogus"}, "sylva: error: ", "--bogus"},
+    {"UnknownOptionAlone", {"--bogus"}, "sylva: error: ", "--bogus"},
+    // A mistyped command is named, not reported as a missing one.
+    {"MistypedCommand", {"runn", "model.l"}, "sylva: error: ", "runn"},
+    {"NoCommand", {}, "sylva: error: ", "run or translate"},
+    {"NegativeStepCount", {"run", "model.l", "--string", "out.txt", "--steps", "-3"}, "sylva: error: --steps: ",
+     "expected a number of steps (0 or more), not '-3'"},
+    {"StepCountNotANumber", {"run", "model.l", "--string", "out.txt", "--steps", "x"}, "sylva: error: --steps: ",
+     "expected a number of steps (0 or more), not 'x'"},
+    {"StepCountWithTrailingText", {"run", "model.l", "--string", "out.txt", "--steps", "2x"},
+     "sylva: error: --steps: ", "expected a number of steps (0 or more), not '2x'"},
+};
 
-TEST(CliErrors, WrongParameterCountInProduce) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float, float);\n"
-                                  "axiom: A(1, 2);\n"
-                                  "A(x, y) : { produce F(1) A(x); }\n");  // A: line 3, column 26
-  EXPECT_TRUE(FailsWith(r, "model.l:3:26: error: ", "module 'A' has 2 parameters but is given 1"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
+class CliBadCommandLine : public ::testing::TestWithParam<BadCommandLine> {};
 
-TEST(CliErrors, WrongParameterCountInPredecessor) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "axiom: A(1);\n"
-                                  "A(x) : { produce A(x); }\n"
-                                  "    A(x, y) : { produce A(x); }\n");  // A: line 4, column 5
-  EXPECT_TRUE(FailsWith(r, "model.l:4:5: error: ", "module 'A' has 1 parameter but the predecessor names 2"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
-
-TEST(CliErrors, MissingSemicolonAfterModuleDeclaration) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float)\n"
-                                  "axiom: A(1);\n");  // reported at 'axiom': line 2, column 1
-  EXPECT_TRUE(FailsWith(r, "model.l:2:1: error: ", "expected ';' after the declaration of module 'A'"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
-
-TEST(CliErrors, UnterminatedParameterList) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "module B(float");  // the file ends after 'float': line 2, column 15
-  EXPECT_TRUE(FailsWith(r, "model.l:2:15: error: ", "expected ')'"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
-
-TEST(CliErrors, UnterminatedBody) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "axiom: A(1);\n"
-                                  "A(x) : {\n"  // the body's '{': line 3, column 8
-                                  "  if (x > 0) {\n"
-                                  "    produce A(x + 1);\n"
-                                  "  }\n");
-  EXPECT_TRUE(FailsWith(r, "model.l:3:8: error: ", "expected '}'"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
-
-TEST(CliErrors, PredefinedModuleRedeclared) {
-  std::string dir = test_dir();
-  ProcessResult r = run_bad_model(dir,
-                                  "module A(float);\n"
-                                  "module F(float);\n"  // F: line 2, column 8
-                                  "axiom: A(1);\n");
-  EXPECT_TRUE(FailsWith(r, "model.l:2:8: error: ", "'F' is a predefined module"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-}
-
-TEST(CliErrors, MissingModelFile) {
-  std::string dir = test_dir();
-  ProcessResult r = run_sylva({"run", "absent.l", "--string", "out.txt"}, dir);
-  EXPECT_TRUE(FailsWith(r, "absent.l: error: ", "no such file"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-  EXPECT_TRUE(FailsWith(run_sylva({"translate", "absent.l"}, dir), "absent.l: error: ", "no such file"));
-}
-
-TEST(CliErrors, DirectoryAsModel) {
-  std::string dir = test_dir();
+TEST_P(CliBadCommandLine, FailsAndWritesNothing) {
+  const std::string dir = make_temp_dir("cli-args-" + GetParam().name);
+  write_file(dir + "/model.l", "module A(float);\naxiom: A(1);\n");
   fs::create_directory(dir + "/plant.l");
-  ProcessResult r = run_sylva({"run", "plant.l", "--string", "out.txt"}, dir);
-  EXPECT_TRUE(FailsWith(r, "plant.l: error: ", "is a directory"));
+  EXPECT_TRUE(FailsWith(run_sylva(GetParam().args, dir), GetParam().prefix, GetParam().what));
   EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-  EXPECT_TRUE(FailsWith(run_sylva({"translate", "plant.l"}, dir), "plant.l: error: ", "is a directory"));
 }
 
-TEST(CliErrors, UnknownOption) {
-  std::string dir = test_dir();
-  write_file(dir + "/model.l", "module A(float);\naxiom: A(1);\n");
-  ProcessResult r = run_sylva({"run", "model.l", "--string", "out.txt", "--bogus"}, dir);
-  EXPECT_TRUE(FailsWith(r, "sylva: error: ", "--bogus"));
-  EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-  EXPECT_TRUE(FailsWith(run_sylva({"--bogus"}, dir), "sylva: error: ", "--bogus"));
-  // A mistyped command is named, not reported as a missing one.
-  EXPECT_TRUE(FailsWith(run_sylva({"runn", "model.l"}, dir), "sylva: error: ", "runn"));
-  EXPECT_TRUE(FailsWith(run_sylva({}, dir), "sylva: error: ", "run or translate"));
-}
-
-TEST(CliErrors, BadStepCount) {
-  std::string dir = test_dir();
-  write_file(dir + "/model.l", "module A(float);\naxiom: A(1);\n");
-  for (const char* steps : {"-3", "x", "2x"}) {
-    ProcessResult r = run_sylva({"run", "model.l", "--string", "out.txt", "--steps", steps}, dir);
-    EXPECT_TRUE(FailsWith(r, "sylva: error: --steps: ", std::string("expected a number of steps (0 or more), not '") +
-                                                           steps + "'"));
-    EXPECT_TRUE(NothingWritten(dir, "out.txt"));
-  }
-}
+INSTANTIATE_TEST_SUITE_P(Table, CliBadCommandLine, ::testing::ValuesIn(kBadCommandLines),
+                         [](const ::testing::TestParamInfo<BadCommandLine>& info) { return info.param.name; });
 
 TEST(CliErrors, CppErrorInProductionBody) {
   std::string dir = test_dir();
@@ -260,22 +246,54 @@ TEST(Cli, RunHelpMentionsEveryOption) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from:\n" << r.out;
 }
 
-TEST(Cli, StringGoesToStandardOutput) {
-  std::string dir = test_dir();
-  write_file(dir + "/model.l", kGrowing);
-  ProcessResult by_default = run_sylva({"run", "model.l"}, dir);
-  ASSERT_EQ(by_default.exit_code, 0) << show(by_default);
-  EXPECT_EQ(by_default.out, "A(9)\n");
-  EXPECT_EQ(by_default.err, "");
+// A model that runs: what it prints on stdout, and on stderr (exactly, or a
+// part of it).
+struct GoodRun {
+  std::string name;
+  std::string model;
+  std::vector<std::string> args;
+  std::string out;
+  std::optional<std::string> err = std::nullopt;  // the whole of stderr
+  std::string err_part = "";                       // a part of stderr
+};
 
-  ProcessResult dash = run_sylva({"run", "model.l", "--string", "-"}, dir);
-  ASSERT_EQ(dash.exit_code, 0) << show(dash);
-  EXPECT_EQ(dash.out, "A(9)\n");
+const std::vector<GoodRun> kGoodRuns = {
+    // The string goes to standard output by default, or with --string -.
+    {"StringToStandardOutputByDefault", kGrowing, {"run", "model.l"}, "A(9)\n", ""},
+    {"StringToStandardOutputByDash", kGrowing, {"run", "model.l", "--string", "-"}, "A(9)\n"},
+    {"StepsGiven", kGrowing, {"run", "model.l", "--steps", "1"}, "A(7)\n"},
+    // -D and --define reach the preprocessor.
+    {"ShortDefine", kNeedsStart, {"run", "model.l", "-D", "START=5"}, "A(5)\n"},
+    {"LongDefine", kNeedsStart, {"run", "model.l", "--define", "START=7"}, "A(7)\n"},
+    // Printf goes to standard error, the string to standard output.
+    {"PrintfGoesToStandardError",
+     "module A(float);\n"
+     "axiom: A(5);\n"
+     "derivation length: 2;\n"
+     "A(x) : { Printf(\"grow %g\\n\", x); produce A(x + 1); }\n",
+     {"run", "model.l"},
+     "A(7)\n",
+     std::nullopt,
+     "grow 5\ngrow 6\n"},
+};
 
-  ProcessResult steps = run_sylva({"run", "model.l", "--steps", "1"}, dir);
-  ASSERT_EQ(steps.exit_code, 0) << show(steps);
-  EXPECT_EQ(steps.out, "A(7)\n");
+class CliRun : public ::testing::TestWithParam<GoodRun> {};
+
+TEST_P(CliRun, PrintsTheString) {
+  const GoodRun& run = GetParam();
+  const std::string dir = make_temp_dir("cli-run-" + run.name);
+  write_file(dir + "/model.l", run.model);
+  const ProcessResult r = run_sylva(run.args, dir);
+  ASSERT_EQ(r.exit_code, 0) << show(r);
+  EXPECT_EQ(r.out, run.out);
+  if (run.err) {
+    EXPECT_EQ(r.err, *run.err);
+  }
+  EXPECT_NE(r.err.find(run.err_part), std::string::npos) << show(r);
 }
+
+INSTANTIATE_TEST_SUITE_P(Table, CliRun, ::testing::ValuesIn(kGoodRuns),
+                         [](const ::testing::TestParamInfo<GoodRun>& info) { return info.param.name; });
 
 TEST(Cli, StringToFile) {
   std::string dir = test_dir();
@@ -360,28 +378,6 @@ TEST(Cli, TranslatePrintsCpp) {
   EXPECT_NE(read_text(dir + "/model.cpp").find("sylva_model_v1"), std::string::npos);
 }
 
-TEST(Cli, DefineReachesThePreprocessor) {
-  std::string dir = test_dir();
-  write_file(dir + "/model.l",
-             "#ifndef START\n"
-             "#error START is not defined\n"
-             "#endif\n"
-             "module A(float);\n"
-             "axiom: A(START);\n"
-             "derivation length: 0;\n");
-  ProcessResult r = run_sylva({"run", "model.l", "-D", "START=5"}, dir);
-  ASSERT_EQ(r.exit_code, 0) << show(r);
-  EXPECT_EQ(r.out, "A(5)\n");
-
-  r = run_sylva({"run", "model.l", "--define", "START=7"}, dir);
-  ASSERT_EQ(r.exit_code, 0) << show(r);
-  EXPECT_EQ(r.out, "A(7)\n");
-
-  // Without it, the model's own #error is reported where it stands.
-  r = run_sylva({"run", "model.l"}, dir);
-  EXPECT_TRUE(FailsWith(r, "model.l:2:", "START is not defined"));
-}
-
 TEST(Cli, IncludeFromTheModelsDirectory) {
   std::string dir = test_dir();
   fs::create_directory(dir + "/model");
@@ -399,19 +395,6 @@ TEST(Cli, IncludeFromTheModelsDirectory) {
   r = run_sylva({"run", dir + "/model/plant.l"}, "/");
   ASSERT_EQ(r.exit_code, 0) << show(r);
   EXPECT_EQ(r.out, "A(7)\n");
-}
-
-TEST(Cli, PrintfGoesToStandardError) {
-  std::string dir = test_dir();
-  write_file(dir + "/model.l",
-             "module A(float);\n"
-             "axiom: A(5);\n"
-             "derivation length: 2;\n"
-             "A(x) : { Printf(\"grow %g\\n\", x); produce A(x + 1); }\n");
-  ProcessResult r = run_sylva({"run", "model.l"}, dir);
-  ASSERT_EQ(r.exit_code, 0) << show(r);
-  EXPECT_EQ(r.out, "A(7)\n");
-  EXPECT_NE(r.err.find("grow 5\ngrow 6\n"), std::string::npos) << show(r);
 }
 
 }  // namespace

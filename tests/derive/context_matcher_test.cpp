@@ -317,185 +317,171 @@ std::string write_model(const std::string& test, const std::string& body) {
                              body);
 }
 
-// 3.1.3: << reads the new string, so one forward step propagates along it.
-TEST(ContextMatchingModel, NewLeftContextReadsStringBeingBuiltForward) {
-  // A(1) is copied; B#1 sees A(1) -> B(1); B#2 sees the new B(1) -> B(2); B#3 -> B(3).
-  // (With old context < every B would have seen B(0) or A(1).)
-  const std::string model = write_model("newleft",
-                                        "derivation length: 1;\naxiom: A(1) B(0) B(0) B(0);\n"
-                                        "A(x) << B(y): { produce B(x); }\n"
-                                        "B(x) << B(y): { produce B(x+1); }\n");
-  EXPECT_EQ(derive_string(model), "A(1) B(1) B(2) B(3)");
+// A tiny model (after the declarations of A ... E, each with an int) and
+// its string after `steps` steps (-1: its derivation length).
+struct ModelCase {
+  std::string name;
+  std::string body;
+  int steps;
+  std::string expected;
+};
+
+const std::string kCutRules =
+    "derivation length: 1;\naxiom: A(1) SB() B(1) Cut() B(2) SB() B(3) EB() B(4) EB() B(5) Cut() B(6);\n"
+    "B(x): { produce B(x+10); }\n";
+const std::string kMultiModuleRules =
+    "derivation length: 1;\naxiom: A(1) B(2) C(3) A(4) B(5) B(6);\n"
+    "A(x) B(y) > C(z): { produce D(x+y+z); }\n"
+    "A(x) B(y): { produce E(x*y); }\n"
+    "B(y): { produce B(y+100); }\n";
+const std::string kDecompositionRule = "A(x): { if (x > 0) produce B(1) A(x-1); }\n";
+
+const std::vector<ModelCase> kModelCases = {
+    // 3.1.3: << reads the new string, so one forward step propagates along it.
+    // A(1) is copied; B#1 sees A(1) -> B(1); B#2 sees the new B(1) -> B(2); B#3 -> B(3).
+    // (With old context < every B would have seen B(0) or A(1).)
+    {"newleft",
+     "derivation length: 1;\naxiom: A(1) B(0) B(0) B(0);\n"
+     "A(x) << B(y): { produce B(x); }\n"
+     "B(x) << B(y): { produce B(x+1); }\n",
+     -1, "A(1) B(1) B(2) B(3)"},
+    // 3.1.3: >> reads the new string under Backward(), built from the right.
+    // Right to left: A(1) copied; the last B sees A(1) -> B(1); then B(2); then B(3).
+    {"newright",
+     "Start: { Backward(); }\n"
+     "derivation length: 1;\naxiom: B(0) B(0) B(0) A(1);\n"
+     "B(y) >> A(x): { produce B(x); }\n"
+     "B(y) >> B(x): { produce B(x+1); }\n",
+     -1, "B(3) B(2) B(1) A(1)"},
+    // 3.1.3: a new context never matches in the wrong direction; the next rule is tried.
+    // Backward: A(x) << B(y) cannot match, B(y) falls to the plain rule -> B(100).
+    {"newleft-backward",
+     "Start: { Backward(); }\n"
+     "derivation length: 1;\naxiom: A(1) B(0);\n"
+     "A(x) << B(y): { produce B(x); }\n"
+     "B(y): { produce B(y+100); }\n",
+     -1, "A(1) B(100)"},
+    // Forward: B(y) >> A(x) cannot match, B(y) falls to the plain rule -> B(100).
+    {"newright-forward",
+     "derivation length: 1;\naxiom: B(0) A(1);\n"
+     "B(y) >> A(x): { produce B(x); }\n"
+     "B(y): { produce B(y+100); }\n",
+     -1, "B(100) A(1)"},
+    // 5.4: Cut removes itself and the rest of its branch (up to the unmatched EB,
+    // kept) or of the string; it has no effect under Backward().
+    // Forward: "Cut() B(2) [B(3)] B(4)" goes (the EB stays), B(5) is rewritten, "Cut() B(6)" goes.
+    {"cut", kCutRules, -1, "A(1) SB B(11) EB B(15)"},
+    // Backward: Cut stays and everything is rewritten.
+    {"cut-backward", "Start: { Backward(); }\n" + kCutRules, -1,
+     "A(1) SB B(11) Cut B(12) SB B(13) EB B(14) EB B(15) Cut B(16)"},
+    // 4.2: ignore: applies to the following productions until `ignore: ;`.
+    // D(2): left C(1) past A(10), right E(3) past B(5) -> D(1+2+3) = D(6).
+    // E(3): the rule after `ignore: ;` sees B(5) on its left, not D -> unchanged.
+    {"ignore",
+     "derivation length: 1;\naxiom: C(1) A(10) D(2) B(5) E(3);\n"
+     "ignore: A B;\n"
+     "C(x) < D(y) > E(z): { produce D(x+y+z); }\n"
+     "ignore: ;\n"
+     "D(x) < E(y): { produce E(99); }\n",
+     -1, "C(1) A(10) D(6) B(5) E(3)"},
+    // 4.2: consider: only the listed modules count; SB and EB always do.
+    // Right of D(2): [ E(7) ] is a lateral branch, skipped whole; B(5) is not
+    // considered; E(3) matches -> D(1+2+3). (Were SB ignored, E(7) would give D(10).)
+    {"consider",
+     "derivation length: 1;\naxiom: C(1) A(10) D(2) SB() E(7) EB() B(5) E(3);\n"
+     "consider: C D E;\n"
+     "C(x) < D(y) > E(z): { produce D(x+y+z); }\n",
+     -1, "C(1) A(10) D(6) SB E(7) EB B(5) E(3)"},
+    // Listing SB and EB in ignore: has no effect: the same answer.
+    {"ignore-brackets",
+     "derivation length: 1;\naxiom: C(1) A(10) D(2) SB() E(7) EB() B(5) E(3);\n"
+     "ignore: A B SB EB;\n"
+     "C(x) < D(y) > E(z): { produce D(x+y+z); }\n",
+     -1, "C(1) A(10) D(6) SB E(7) EB B(5) E(3)"},
+    // Chapter 9 / 3.2.1: productions are tried in file order; a body that ends
+    // without produce does not apply, and the next one is tried.
+    // A(1): rule 1 applies (rule 3 would too) -> B(1). A(2): rule 1 returns
+    // without produce, rule 2 -> B(20). A(3): rules 1 and 2 fall through -> B(303).
+    {"order",
+     "derivation length: 1;\naxiom: A(1) A(2) A(3);\n"
+     "A(x): { if (x == 1) produce B(1); }\n"
+     "A(x): { if (x == 2) produce B(20); return; }\n"
+     "A(x): { produce B(300+x); }\n",
+     -1, "B(1) B(20) B(303)"},
+    // 3.2.2: nproduce builds the successor; without a final produce the partial
+    // successor is dropped and the next rule is tried.
+    // A(1): rule 1 nproduces B(99) but never produces -> dropped; rule 2 gives
+    // B(1) [ C(1) ] D(1). A(7): rule 1 produces -> B(99) B(99) E(7).
+    {"nproduce",
+     "derivation length: 1;\naxiom: A(1) A(7);\n"
+     "A(x): { nproduce B(99); if (x > 5) { nproduce B(99); produce E(x); } }\n"
+     "A(x): { nproduce B(x); nproduce SB() C(x) EB(); produce D(x); }\n",
+     -1, "B(1) SB C(1) EB D(1) B(99) B(99) E(7)"},
+    // 3.2.2 with 3.1.3: modules nproduced by a rule that did not apply are not
+    // part of the new string seen by a later rule's << (even when they made the
+    // new string grow).
+    // B(5) is copied. A(1): rule 1 nproduces 200 C's and gives up; rule 2's
+    // new left context is B(5) -> A(5).
+    {"nproduce-newleft",
+     "derivation length: 1;\naxiom: B(5) A(1);\n"
+     "A(x): { for (int i = 0; i < 200; ++i) nproduce C(i); }\n"
+     "B(y) << A(x): { produce A(y); }\n",
+     -1, "B(5) A(5)"},
+    // 3.2.1: `produce;` erases the strict predecessor (unlike ending without produce).
+    // A(1) erased by produce;, B(2) erased, A(3) falls through every rule and stays.
+    {"erase",
+     "derivation length: 1;\naxiom: A(1) B(2) A(3);\n"
+     "A(x): { if (x == 1) produce; }\n"
+     "B(x): { produce; }\n",
+     -1, "A(3)"},
+    // 3.1.1: a strict predecessor of several modules is replaced as a whole,
+    // forward and backward.
+    // A(1) B(2) > C(3) -> D(6); C(3) copied; A(4) B(5) has B(6), not C, on its
+    // right -> the plain A B rule, E(4*5); B(6) alone -> B(106). The B's inside
+    // a matched A B are consumed, not rewritten by B(y).
+    {"multi", kMultiModuleRules, -1, "D(6) C(3) E(20) B(106)"},
+    // Backward (right to left) finds the same matches.
+    {"multi-backward", "Start: { Backward(); }\n" + kMultiModuleRules, -1, "D(6) C(3) E(20) B(106)"},
+    // Chapter 9 through the engine: lateral branches in right and left context.
+    // A(1) > B(y): the branch [B(2)] is skipped -> y = 3 -> A(3).
+    // A(x) < B(y): B(2) (first in the branch) and B(3) (after the branch) both have A(1) as parent.
+    // C(x) > [B(y)] B(z): C(4) sees [B(5)] then B(6) -> C(11).
+    {"branching",
+     "derivation length: 1;\n"
+     "axiom: A(1) SB() B(2) EB() B(3) C(4) SB() B(5) EB() B(6);\n"
+     "A(x) > B(y): { produce A(y); }\n"
+     "A(x) < B(y): { produce B(y+10*x); }\n"
+     "C(x) > [ B(y) ] B(z): { produce C(x+y+z); }\n",
+     -1, "A(3) SB B(12) EB B(13) C(15) SB B(5) EB B(6)"},
+    // 4.3.1: decomposition recurses up to `maximum depth` levels (default 1), after
+    // the axiom and after every step.
+    // Depth 3: A(5) -> B A(4) -> B B A(3) -> B B B A(2), then the limit.
+    {"depth3", "axiom: A(5);\ndecomposition:\nmaximum depth: 3;\n" + kDecompositionRule, 0, "B(1) B(1) B(1) A(2)"},
+    // One (empty) step later A(2) decomposes again: B B A(0), and A(0) produces nothing.
+    {"depth3-step", "axiom: A(5);\ndecomposition:\nmaximum depth: 3;\n" + kDecompositionRule, 1,
+     "B(1) B(1) B(1) B(1) B(1) A(0)"},
+    // Default depth 1: one application only.
+    {"depth1", "axiom: A(5);\ndecomposition:\n" + kDecompositionRule, 0, "B(1) A(4)"},
+};
+
+class ContextMatchingModel : public ::testing::TestWithParam<ModelCase> {};
+
+TEST_P(ContextMatchingModel, DerivesTheExpectedString) {
+  const ModelCase& c = GetParam();
+  EXPECT_EQ(derive_string(write_model(c.name, c.body), c.steps), c.expected);
 }
 
-// 3.1.3: >> reads the new string under Backward(), built from the right.
-TEST(ContextMatchingModel, NewRightContextReadsStringBeingBuiltBackward) {
-  // Right to left: A(1) copied; the last B sees A(1) -> B(1); then B(2); then B(3).
-  const std::string model = write_model("newright",
-                                        "Start: { Backward(); }\n"
-                                        "derivation length: 1;\naxiom: B(0) B(0) B(0) A(1);\n"
-                                        "B(y) >> A(x): { produce B(x); }\n"
-                                        "B(y) >> B(x): { produce B(x+1); }\n");
-  EXPECT_EQ(derive_string(model), "B(3) B(2) B(1) A(1)");
-}
-
-// 3.1.3: a new context never matches in the wrong direction; the next rule is tried.
-TEST(ContextMatchingModel, NewContextNeverMatchesInWrongDirection) {
-  // Backward: A(x) << B(y) cannot match, B(y) falls to the plain rule -> B(100).
-  const std::string backward = write_model("newleft-backward",
-                                           "Start: { Backward(); }\n"
-                                           "derivation length: 1;\naxiom: A(1) B(0);\n"
-                                           "A(x) << B(y): { produce B(x); }\n"
-                                           "B(y): { produce B(y+100); }\n");
-  EXPECT_EQ(derive_string(backward), "A(1) B(100)");
-  // Forward: B(y) >> A(x) cannot match, B(y) falls to the plain rule -> B(100).
-  const std::string forward = write_model("newright-forward",
-                                          "derivation length: 1;\naxiom: B(0) A(1);\n"
-                                          "B(y) >> A(x): { produce B(x); }\n"
-                                          "B(y): { produce B(y+100); }\n");
-  EXPECT_EQ(derive_string(forward), "B(100) A(1)");
-}
-
-// 5.4: Cut removes itself and the rest of its branch (up to the unmatched EB,
-// kept) or of the string; it has no effect under Backward().
-TEST(ContextMatchingModel, CutRemovesRestOfBranchForwardOnly) {
-  const std::string axiom =
-      "derivation length: 1;\naxiom: A(1) SB() B(1) Cut() B(2) SB() B(3) EB() B(4) EB() B(5) Cut() B(6);\n"
-      "B(x): { produce B(x+10); }\n";
-  // Forward: "Cut() B(2) [B(3)] B(4)" goes (the EB stays), B(5) is rewritten, "Cut() B(6)" goes.
-  EXPECT_EQ(derive_string(write_model("cut", axiom)), "A(1) SB B(11) EB B(15)");
-  // Backward: Cut stays and everything is rewritten.
-  EXPECT_EQ(derive_string(write_model("cut-backward", "Start: { Backward(); }\n" + axiom)),
-            "A(1) SB B(11) Cut B(12) SB B(13) EB B(14) EB B(15) Cut B(16)");
-}
-
-// 4.2: ignore: applies to the following productions until `ignore: ;`.
-TEST(ContextMatchingModel, IgnoreStatementInProductions) {
-  // D(2): left C(1) past A(10), right E(3) past B(5) -> D(1+2+3) = D(6).
-  // E(3): the rule after `ignore: ;` sees B(5) on its left, not D -> unchanged.
-  const std::string model = write_model("ignore",
-                                        "derivation length: 1;\naxiom: C(1) A(10) D(2) B(5) E(3);\n"
-                                        "ignore: A B;\n"
-                                        "C(x) < D(y) > E(z): { produce D(x+y+z); }\n"
-                                        "ignore: ;\n"
-                                        "D(x) < E(y): { produce E(99); }\n");
-  EXPECT_EQ(derive_string(model), "C(1) A(10) D(6) B(5) E(3)");
-}
-
-// 4.2: consider: only the listed modules count; SB and EB always do.
-TEST(ContextMatchingModel, ConsiderStatementKeepsBrackets) {
-  // Right of D(2): [ E(7) ] is a lateral branch, skipped whole; B(5) is not
-  // considered; E(3) matches -> D(1+2+3). (Were SB ignored, E(7) would give D(10).)
-  const std::string model = write_model("consider",
-                                        "derivation length: 1;\naxiom: C(1) A(10) D(2) SB() E(7) EB() B(5) E(3);\n"
-                                        "consider: C D E;\n"
-                                        "C(x) < D(y) > E(z): { produce D(x+y+z); }\n");
-  EXPECT_EQ(derive_string(model), "C(1) A(10) D(6) SB E(7) EB B(5) E(3)");
-  // Listing SB and EB in ignore: has no effect: the same answer.
-  const std::string listed = write_model("ignore-brackets",
-                                         "derivation length: 1;\naxiom: C(1) A(10) D(2) SB() E(7) EB() B(5) E(3);\n"
-                                         "ignore: A B SB EB;\n"
-                                         "C(x) < D(y) > E(z): { produce D(x+y+z); }\n");
-  EXPECT_EQ(derive_string(listed), "C(1) A(10) D(6) SB E(7) EB B(5) E(3)");
-}
-
-// Chapter 9 / 3.2.1: productions are tried in file order; a body that ends
-// without produce does not apply, and the next one is tried.
-TEST(ContextMatchingModel, ProductionsTriedInOrderWithFallThrough) {
-  // A(1): rule 1 applies (rule 3 would too) -> B(1). A(2): rule 1 returns
-  // without produce, rule 2 -> B(20). A(3): rules 1 and 2 fall through -> B(303).
-  const std::string model = write_model("order",
-                                        "derivation length: 1;\naxiom: A(1) A(2) A(3);\n"
-                                        "A(x): { if (x == 1) produce B(1); }\n"
-                                        "A(x): { if (x == 2) produce B(20); return; }\n"
-                                        "A(x): { produce B(300+x); }\n");
-  EXPECT_EQ(derive_string(model), "B(1) B(20) B(303)");
-}
-
-// 3.2.2: nproduce builds the successor; without a final produce the partial
-// successor is dropped and the next rule is tried.
-TEST(ContextMatchingModel, NproduceBuildsSuccessor) {
-  // A(1): rule 1 nproduces B(99) but never produces -> dropped; rule 2 gives
-  // B(1) [ C(1) ] D(1). A(7): rule 1 produces -> B(99) B(99) E(7).
-  const std::string model = write_model("nproduce",
-                                        "derivation length: 1;\naxiom: A(1) A(7);\n"
-                                        "A(x): { nproduce B(99); if (x > 5) { nproduce B(99); produce E(x); } }\n"
-                                        "A(x): { nproduce B(x); nproduce SB() C(x) EB(); produce D(x); }\n");
-  EXPECT_EQ(derive_string(model), "B(1) SB C(1) EB D(1) B(99) B(99) E(7)");
-}
-
-// 3.2.2 with 3.1.3: modules nproduced by a rule that did not apply are not
-// part of the new string seen by a later rule's << (even when they made the
-// new string grow).
-TEST(ContextMatchingModel, DroppedNproduceIsNotNewLeftContext) {
-  // B(5) is copied. A(1): rule 1 nproduces 200 C's and gives up; rule 2's
-  // new left context is B(5) -> A(5).
-  const std::string model = write_model("nproduce-newleft",
-                                        "derivation length: 1;\naxiom: B(5) A(1);\n"
-                                        "A(x): { for (int i = 0; i < 200; ++i) nproduce C(i); }\n"
-                                        "B(y) << A(x): { produce A(y); }\n");
-  EXPECT_EQ(derive_string(model), "B(5) A(5)");
-}
-
-// 3.2.1: `produce;` erases the strict predecessor (unlike ending without produce).
-TEST(ContextMatchingModel, EmptyProduceErases) {
-  // A(1) erased by produce;, B(2) erased, A(3) falls through every rule and stays.
-  const std::string model = write_model("erase",
-                                        "derivation length: 1;\naxiom: A(1) B(2) A(3);\n"
-                                        "A(x): { if (x == 1) produce; }\n"
-                                        "B(x): { produce; }\n");
-  EXPECT_EQ(derive_string(model), "A(3)");
-}
-
-// 3.1.1: a strict predecessor of several modules is replaced as a whole,
-// forward and backward.
-TEST(ContextMatchingModel, MultiModuleStrictPredecessor) {
-  // A(1) B(2) > C(3) -> D(6); C(3) copied; A(4) B(5) has B(6), not C, on its
-  // right -> the plain A B rule, E(4*5); B(6) alone -> B(106). The B's inside
-  // a matched A B are consumed, not rewritten by B(y).
-  const std::string rules =
-      "derivation length: 1;\naxiom: A(1) B(2) C(3) A(4) B(5) B(6);\n"
-      "A(x) B(y) > C(z): { produce D(x+y+z); }\n"
-      "A(x) B(y): { produce E(x*y); }\n"
-      "B(y): { produce B(y+100); }\n";
-  EXPECT_EQ(derive_string(write_model("multi", rules)), "D(6) C(3) E(20) B(106)");
-  // Backward (right to left) finds the same matches.
-  EXPECT_EQ(derive_string(write_model("multi-backward", "Start: { Backward(); }\n" + rules)),
-            "D(6) C(3) E(20) B(106)");
-}
-
-// Chapter 9 through the engine: lateral branches in right and left context.
-TEST(ContextMatchingModel, BranchingContextsInProductions) {
-  // A(1) > B(y): the branch [B(2)] is skipped -> y = 3 -> A(3).
-  // A(x) < B(y): B(2) (first in the branch) and B(3) (after the branch) both have A(1) as parent.
-  // C(x) > [B(y)] B(z): C(4) sees [B(5)] then B(6) -> C(11).
-  const std::string model = write_model("branching",
-                                        "derivation length: 1;\n"
-                                        "axiom: A(1) SB() B(2) EB() B(3) C(4) SB() B(5) EB() B(6);\n"
-                                        "A(x) > B(y): { produce A(y); }\n"
-                                        "A(x) < B(y): { produce B(y+10*x); }\n"
-                                        "C(x) > [ B(y) ] B(z): { produce C(x+y+z); }\n");
-  EXPECT_EQ(derive_string(model), "A(3) SB B(12) EB B(13) C(15) SB B(5) EB B(6)");
-}
-
-// 4.3.1: decomposition recurses up to `maximum depth` levels (default 1), after
-// the axiom and after every step.
-TEST(ContextMatchingModel, DecompositionStopsAtMaximumDepth) {
-  const std::string rule = "A(x): { if (x > 0) produce B(1) A(x-1); }\n";
-  // Depth 3: A(5) -> B A(4) -> B B A(3) -> B B B A(2), then the limit.
-  const std::string depth3 =
-      write_model("depth3", "axiom: A(5);\ndecomposition:\nmaximum depth: 3;\n" + rule);
-  EXPECT_EQ(derive_string(depth3, 0), "B(1) B(1) B(1) A(2)");
-  // One (empty) step later A(2) decomposes again: B B A(0), and A(0) produces nothing.
-  EXPECT_EQ(derive_string(depth3, 1), "B(1) B(1) B(1) B(1) B(1) A(0)");
-  // Default depth 1: one application only.
-  const std::string depth1 = write_model("depth1", "axiom: A(5);\ndecomposition:\n" + rule);
-  EXPECT_EQ(derive_string(depth1, 0), "B(1) A(4)");
-}
+INSTANTIATE_TEST_SUITE_P(Table, ContextMatchingModel, ::testing::ValuesIn(kModelCases),
+                         [](const ::testing::TestParamInfo<ModelCase>& info) {
+                           std::string name = info.param.name;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
 
 // 4.3.2: interpretation rules only feed the turtle; the string keeps the
 // modules, and the next step's productions see them.
-TEST(ContextMatchingModel, InterpretationIsNotStoredInString) {
+TEST(ContextMatchingInterpretation, InterpretationIsNotStoredInString) {
   // A(1) -> A(2) -> A(3) by the production; interpretation shows A(3) as B(3) C(3).
   const std::string model = write_model("interpretation",
                                         "derivation length: 2;\naxiom: A(1);\n"

@@ -34,6 +34,17 @@ TEST(RepeatedWarnings, PrintfTextThatMentionsWarningsIsNotAWarning) {
   EXPECT_FALSE(RepeatedWarnings::is_warning("warnings: 3\n"));
 }
 
+TEST(RepeatedWarnings, FinishStartsTheCountingAfresh) {
+  std::vector<std::string> out;
+  RepeatedWarnings warnings([&](const std::string& text) { out.push_back(text); });
+  warnings("warning: w\n");
+  warnings.finish();  // once only: no count line
+  warnings("warning: w\n");  // told again after finish
+  warnings("warning: w\n");
+  warnings.finish();
+  EXPECT_EQ(out, (std::vector<std::string>{"warning: w\n", "warning: w\n", "warning: w (2 times in all)\n"}));
+}
+
 // A model whose decomposition reaches the depth limit in every one of its 5
 // steps for every A: one warning, then its count.
 TEST(RepeatedWarnings, ADepthWarningOfEveryStepIsToldOnce) {

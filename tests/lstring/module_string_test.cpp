@@ -1,0 +1,168 @@
+// The packed module string: [id][parameters][id] per module, walked forward
+// and backward with nothing but the table of sizes; views of part of it;
+// growth, moves and copies of the bytes; the buffer built from its end.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "derive/context_matcher.h"
+#include "lstring/module_string.h"
+#include "lstring/module_types.h"
+#include "sylva/predefined_ids.h"
+
+namespace sylva::test {
+namespace {
+
+// SB, EB, then P with a double, Q with nothing, R with three ints: modules of
+// 12, 4 and 16 bytes, so a walk that got a size wrong lands off a boundary.
+class ModuleStringTest : public ::testing::Test {
+ protected:
+  static constexpr ModuleId kSB = 0, kEB = 1, kP = 2, kQ = 3, kR = 4;
+  ModuleTypes types_{{{"SB", 0}, {"EB", 0}, {"P", sizeof(double)}, {"Q", 0}, {"R", 3 * sizeof(int)}}};
+
+  static void add_p(ModuleString& s, double v) { s.append_module(kP, &v, sizeof v); }
+  static void add_r(ModuleString& s, int a, int b, int c) {
+    const int v[3] = {a, b, c};
+    s.append_module(kR, v, sizeof v);
+  }
+  static void add(ModuleString& s, ModuleId id) { s.append_module(id, nullptr, 0); }
+
+  // P(1.5) Q R(1,2,3) [ Q ] P(-2)
+  ModuleString sample() const {
+    ModuleString s;
+    add_p(s, 1.5);
+    add(s, kQ);
+    add_r(s, 1, 2, 3);
+    add(s, kSB);
+    add(s, kQ);
+    add(s, kEB);
+    add_p(s, -2);
+    return s;
+  }
+
+  std::vector<ModuleId> forward_ids(const StringView& v) const {
+    std::vector<ModuleId> ids;
+    for (std::size_t at = v.begin; at < v.end; at = v.next(at)) ids.push_back(v.id_at(at));
+    return ids;
+  }
+  std::vector<ModuleId> backward_ids(const StringView& v) const {
+    std::vector<ModuleId> ids;
+    for (std::size_t at = v.end; at > v.begin; at = v.previous(at)) ids.push_back(module_id_before(v.data, at));
+    return ids;
+  }
+};
+
+TEST_F(ModuleStringTest, EachModuleIsItsIdItsParametersAndItsIdAgain) {
+  ModuleString s;
+  add_r(s, 7, 8, 9);
+  ASSERT_EQ(s.size_bytes(), 2 * sizeof(ModuleId) + 3 * sizeof(int));
+  EXPECT_EQ(module_id_at(s.data(), 0), kR);
+  int params[3];
+  std::memcpy(params, module_params(s.data(), 0), sizeof params);
+  EXPECT_EQ(params[0], 7);
+  EXPECT_EQ(params[2], 9);
+  EXPECT_EQ(module_id_before(s.data(), s.size_bytes()), kR);
+  EXPECT_EQ(types_.encoded_size(kR), s.size_bytes());
+}
+
+TEST_F(ModuleStringTest, WalksForwardAndBackward) {
+  const ModuleString s = sample();
+  const StringView v = s.view(types_);
+  EXPECT_EQ(forward_ids(v), (std::vector<ModuleId>{kP, kQ, kR, kSB, kQ, kEB, kP}));
+  EXPECT_EQ(backward_ids(v), (std::vector<ModuleId>{kP, kEB, kQ, kSB, kR, kQ, kP}));
+  EXPECT_EQ(s.count_modules(types_), 7u);
+  // 12 + 4 + 16 + 4 + 4 + 4 + 12 bytes.
+  EXPECT_EQ(s.size_bytes(), 56u);
+  double last;
+  std::memcpy(&last, module_params(s.data(), v.previous(v.end)), sizeof last);
+  EXPECT_EQ(last, -2);
+}
+
+TEST_F(ModuleStringTest, AViewCoversPartOfTheString) {
+  const ModuleString s = sample();
+  StringView part = s.view(types_);
+  part.begin = 12 + 4;  // from R
+  part.end = part.begin + 16 + 4 + 4 + 4;  // through the branch
+  EXPECT_EQ(forward_ids(part), (std::vector<ModuleId>{kR, kSB, kQ, kEB}));
+  EXPECT_EQ(backward_ids(part), (std::vector<ModuleId>{kEB, kQ, kSB, kR}));
+}
+
+TEST_F(ModuleStringTest, BranchesAreSkippedWholeWhateverTheModuleSizes) {
+  // P [ R(1,2,3) [ P(0) ] Q ] Q: 0 P, 1 [, 2 R, 3 [, 4 P, 5 ], 6 Q, 7 ], 8 Q
+  ModuleString s;
+  add_p(s, 5);
+  add(s, kSB);
+  add_r(s, 1, 2, 3);
+  add(s, kSB);
+  add_p(s, 0);
+  add(s, kEB);
+  add(s, kQ);
+  add(s, kEB);
+  add(s, kQ);
+  const StringView v = s.view(types_);
+  std::vector<std::size_t> at = {v.begin};
+  while (at.back() < v.end) at.push_back(v.next(at.back()));
+  // These helpers find the brackets by the predefined ids.
+  ASSERT_EQ(kSB, rt::mid::SB);
+  ASSERT_EQ(kEB, rt::mid::EB);
+  EXPECT_EQ(derive::skip_branch_forward(v, at[1]), at[8]);
+  EXPECT_EQ(derive::skip_branch_forward(v, at[3]), at[6]);
+  EXPECT_EQ(derive::skip_branch_backward(v, at[7]), at[1]);
+  EXPECT_EQ(derive::find_unmatched_end(v, at[2]), at[7]);
+}
+
+TEST_F(ModuleStringTest, GrowsKeepingWhatItHolds) {
+  ModuleString s;
+  for (int k = 0; k < 10000; ++k) add_r(s, k, -k, 2 * k);
+  EXPECT_EQ(s.count_modules(types_), 10000u);
+  const StringView v = s.view(types_);
+  std::size_t at = v.begin;
+  for (int k = 0; k < 9999; ++k) at = v.next(at);
+  int params[3];
+  std::memcpy(params, module_params(s.data(), at), sizeof params);
+  EXPECT_EQ(params[0], 9999);
+  EXPECT_EQ(params[1], -9999);
+  EXPECT_EQ(params[2], 19998);
+}
+
+TEST_F(ModuleStringTest, MovesAssignsAndTruncates) {
+  ModuleString s = sample();
+  const std::size_t size = s.size_bytes();
+  ModuleString moved = std::move(s);
+  EXPECT_EQ(moved.size_bytes(), size);
+  EXPECT_TRUE(s.empty());  // NOLINT: a moved-from string is empty and usable
+  add(s, kQ);
+  EXPECT_EQ(s.count_modules(types_), 1u);
+
+  ModuleString copy;
+  copy.assign(moved.data(), moved.size_bytes());
+  EXPECT_EQ(std::memcmp(copy.data(), moved.data(), size), 0);
+  copy.truncate(12 + 4);  // P(1.5) Q
+  EXPECT_EQ(forward_ids(copy.view(types_)), (std::vector<ModuleId>{kP, kQ}));
+  copy.clear();
+  EXPECT_TRUE(copy.empty());
+}
+
+TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
+  ModuleString p, q;
+  add_p(p, 3);
+  add(q, kQ);
+  PrependBuffer b;
+  for (int k = 0; k < 1000; ++k) {
+    b.prepend(q.data(), q.size_bytes());
+    b.prepend(p.data(), p.size_bytes());
+  }
+  EXPECT_EQ(b.size_bytes(), 1000 * (12u + 4u));
+  const StringView v{b.data(), b.begin(), b.end(), types_.encoded_sizes()};
+  const std::vector<ModuleId> ids = forward_ids(v);
+  ASSERT_EQ(ids.size(), 2000u);
+  EXPECT_EQ(ids.front(), kP);  // the last prepended comes first
+  EXPECT_EQ(ids.back(), kQ);
+  b.clear();
+  EXPECT_EQ(b.size_bytes(), 0u);
+}
+
+}  // namespace
+}  // namespace sylva::test
