@@ -1,10 +1,10 @@
 // The binary interface between the engine and a compiled model.
 //
 // A compiled model is a shared library exporting one C function,
-// `sylva_model_v1`, that returns a ModelDescriptor: its module types, its
-// rules with their patterns and body functions, and its control statements.
-// The engine owns the strings; the model only reads parameter blocks and
-// appends modules to a ModuleBuffer. Everything here is plain data so the
+// `sylva_model_v1`, that returns a ModelDescriptor: its module types (with
+// their parameters' types and offsets), its rules with their patterns and
+// body functions, and its control statements. The engine owns the strings;
+// the model only reads parameter blocks and appends modules to a ModuleBuffer. Everything here is plain data so the
 // header stays cheap to compile into every model.
 #pragma once
 
@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 9;
+inline constexpr std::uint32_t kAbiVersion = 10;
 
 using ModuleId = std::uint16_t;
 
@@ -56,16 +56,57 @@ struct TextSource {
   const char* expected = nullptr;  // on failure: what was expected there
 };
 
+// What a parameter is: a module's parameter, a struct's field, a vector's
+// coordinate or an array's element.
+enum class ParamKind : std::uint8_t {
+  kFloat,
+  kDouble,
+  kLongDouble,
+  kBool,
+  kSigned,    // a signed integer (char, short, int, long ...)
+  kUnsigned,  // an unsigned integer
+  kEnum,      // `element` is its underlying integer type
+  kVector,    // V2f ... V3d: `count` coordinates of type `element`
+  kArray,     // `count` elements of type `element`, `element->size` bytes apart
+  kStruct,    // `fields` are those the model's source lists (none: its layout is unknown)
+  kText,      // a pointer to a NUL-terminated string (a label's text)
+  kOther,     // anything else (other pointers, unions ...): only bytes
+};
+
+struct ParamField;
+
+struct ParamType {
+  ParamKind kind;
+  std::uint32_t size;
+  const ParamType* element = nullptr;
+  std::uint32_t count = 0;
+  const ParamField* fields = nullptr;
+  std::uint32_t field_count = 0;
+};
+
+// A module's parameter (unnamed, at its offset in the parameter block) or a
+// struct's field (at its offset in the struct). `type` is null for a field
+// whose place is not known (a bit-field, a reference).
+struct ParamField {
+  const char* name;
+  std::uint32_t offset;
+  const ParamType* type;
+};
+
 struct ModuleType {
   const char* name;
   std::uint32_t param_size;
-  // Appends the parameters as "p1,p2,..." (no parentheses).
+  // The saved-string text of the parameters, "p1,p2,..." without
+  // parentheses (null for a predefined module: the engine has its own).
   void (*format_params)(const unsigned char* params, TextSink* out);
-  // Reading back what format_params wrote: reads `param_count` values
-  // separated by commas into `params` and stops before the closing
-  // parenthesis; false (with `in->expected` set) on bad text.
   std::uint32_t param_count;
+  // Reads back what format_params wrote: `param_count` values separated by
+  // commas into `params`, stopping before the closing parenthesis; false
+  // (with `in->expected` set) on bad text. Null: they cannot be read back.
   bool (*parse_params)(TextSource* in, unsigned char* params);
+  // The parameters' types and offsets, `param_count` of them (null for a
+  // predefined module: the engine has its own).
+  const ParamField* params;
 };
 
 enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2 };
