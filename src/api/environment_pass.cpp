@@ -1,8 +1,6 @@
 #include "api/environment_pass.h"
 
 #include <algorithm>
-#include <cctype>
-#include <cstdlib>
 #include <cstring>
 
 #include "support/diagnostic.h"
@@ -12,83 +10,11 @@
 namespace sylva {
 namespace {
 
-// The numbers in a module's printed parameters ("p1,p2" as ModuleTypes
-// prints them), in order. The registry holds no layout for an L+C module's
-// parameters, so the printed form is read with a tokenizer that knows what
-// format_params writes: numbers (nan and inf among them), vectors "(x,y)",
-// arrays "[a,b]", structs "{name=value,...}" whose field names are labels, not
-// values, quoted strings and "#hex" bytes, which hold no numbers to send.
-class PrintedParameterReader {
- public:
-  explicit PrintedParameterReader(const std::string& text) : s_(text.c_str()) {}
-
-  std::vector<float> numbers() {
-    std::vector<float> out;
-    while (*s_) {
-      if (is_separator(*s_)) ++s_;
-      else if (*s_ == '"') skip_string();
-      else if (*s_ == '#') skip_bytes();
-      else if (is_name_start(*s_) && skip_label()) continue;
-      else read_number(out);
-    }
-    return out;
-  }
-
- private:
-  static bool is_separator(char c) { return std::strchr(",()[]{} \t", c) != nullptr; }
-  static bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-  static bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-  // Skips "name=" and says so; a word without '=' (nan, inf) is left to be read as a number.
-  bool skip_label() {
-    const char* end = s_;
-    while (is_name_char(*end)) ++end;
-    if (*end != '=') return false;
-    s_ = end + 1;
-    return true;
-  }
-
-  void skip_string() {
-    for (++s_; *s_ && *s_ != '"'; ++s_)
-      if (*s_ == '\\' && s_[1]) ++s_;
-    if (*s_) ++s_;
-  }
-
-  void skip_bytes() {
-    for (++s_; std::isxdigit(static_cast<unsigned char>(*s_)); ++s_) {
-    }
-  }
-
-  // strtod reads "nan", "-nan", "inf" and "-inf" as printf writes them.
-  void read_number(std::vector<float>& out) {
-    char* end = nullptr;
-    const double v = std::strtod(s_, &end);
-    if (end == s_) {
-      ++s_;  // nothing this reader knows: not a number
-      return;
-    }
-    out.push_back(static_cast<float>(v));
-    s_ = end;
-  }
-
-  const char* s_;
-};
-
-// A module's parameters as numbers: a cpfg module's are all floats; an L+C
-// module's are read from its printed form, so ints, doubles, vectors and
-// structs give their numbers in declaration order.
+// A module's parameters as numbers, in declaration order: ints, doubles,
+// vectors and structs give theirs as floats.
 std::vector<float> parameters_as_floats(const ModuleTypes& types, ModuleId id, const unsigned char* params) {
-  std::vector<float> out;
-  const ModuleTypes::Type& type = types[id];
-  if (types.cpfg()) {
-    out.resize(type.param_size / sizeof(float));
-    std::memcpy(out.data(), params, out.size() * sizeof(float));
-    return out;
-  }
-  if (type.param_size == 0) return out;
-  std::string text;
-  types.format_params(id, params, text);
-  return PrintedParameterReader(text).numbers();
+  const std::vector<double> numbers = types.numbers(id, params);
+  return std::vector<float>(numbers.begin(), numbers.end());
 }
 
 // Walks the string with the turtle, as lpfg and cpfg do in their

@@ -127,26 +127,43 @@ struct Function {
 
 const std::map<std::string, Function>& functions() {
   static const std::map<std::string, Function> table = {
-      {"sin", {"sylva_cpfg_sin", 1, 1}},     {"cos", {"sylva_cpfg_cos", 1, 1}},
-      {"tan", {"sylva_cpfg_tan", 1, 1}},     {"asin", {"sylva_cpfg_asin", 1, 1}},
-      {"acos", {"sylva_cpfg_acos", 1, 1}},   {"atan", {"sylva_cpfg_atan", 1, 2}},
-      {"atan2", {"sylva_cpfg_atan2", 2, 2}}, {"exp", {"::std::exp", 1, 1}},
-      {"log", {"::std::log", 1, 1}},         {"sqrt", {"::std::sqrt", 1, 1}},
-      {"fabs", {"::std::fabs", 1, 1}},       {"floor", {"::std::floor", 1, 1}},
-      {"ceil", {"::std::ceil", 1, 1}},       {"trunc", {"::std::trunc", 1, 1}},
-      {"sign", {"sylva_cpfg_sign", 1, 1}},   {"ran", {"sylva_cpfg_ran", 1, 1}},
-      {"nran", {"sylva_cpfg_nran", 2, 2}},   {"srand", {"sylva_cpfg_srand", 1, 1}},
-      {"func", {"sylva_cpfg_func", 2, 2}},   {"pow", {"sylva_cpfg_pow", 2, 2}},
-      {"bran", {"sylva_cpfg_bran", 2, 2}},   {"biran", {"sylva_cpfg_biran", 2, 2}},
-      {"fclose", {"sylva_cpfg_fclose", 1, 1}}, {"fflush", {"sylva_cpfg_fflush", 1, 1}},
-      {"curveX", {"sylva_cpfg_curveX", 2, 2}}, {"curveY", {"sylva_cpfg_curveY", 2, 2}},
-      {"curveZ", {"sylva_cpfg_curveZ", 2, 2}}, {"curveGAL", {"sylva_cpfg_curveGAL", 1, 1}},
-      {"stop", {"sylva_cpfg_stop", 0, 1}},
+      {"sin", {"::sylva::rt::cpfg::sin", 1, 1}},
+      {"cos", {"::sylva::rt::cpfg::cos", 1, 1}},
+      {"tan", {"::sylva::rt::cpfg::tan", 1, 1}},
+      {"asin", {"::sylva::rt::cpfg::asin", 1, 1}},
+      {"acos", {"::sylva::rt::cpfg::acos", 1, 1}},
+      {"atan", {"::sylva::rt::cpfg::atan", 1, 2}},
+      {"atan2", {"::sylva::rt::cpfg::atan2", 2, 2}},
+      {"exp", {"::std::exp", 1, 1}},
+      {"log", {"::std::log", 1, 1}},
+      {"sqrt", {"::std::sqrt", 1, 1}},
+      {"fabs", {"::std::fabs", 1, 1}},
+      {"floor", {"::std::floor", 1, 1}},
+      {"ceil", {"::std::ceil", 1, 1}},
+      {"trunc", {"::std::trunc", 1, 1}},
+      {"sign", {"::sylva::rt::cpfg::sign", 1, 1}},
+      {"ran", {"::sylva::rt::cpfg::ran", 1, 1}},
+      {"nran", {"::sylva::rt::cpfg::nran", 2, 2}},
+      {"srand", {"::sylva::rt::cpfg::srand", 1, 1}},
+      {"func", {"::sylva::rt::cpfg::func", 2, 2}},
+      {"pow", {"::sylva::rt::cpfg::pow", 2, 2}},
+      {"bran", {"::sylva::rt::cpfg::bran", 2, 2}},
+      {"biran", {"::sylva::rt::cpfg::biran", 2, 2}},
+      {"fclose", {"::sylva::rt::cpfg::fclose", 1, 1}},
+      {"fflush", {"::sylva::rt::cpfg::fflush", 1, 1}},
+      {"curveX", {"::sylva::rt::cpfg::curve_x", 2, 2}},
+      {"curveY", {"::sylva::rt::cpfg::curve_y", 2, 2}},
+      {"curveZ", {"::sylva::rt::cpfg::curve_z", 2, 2}},
+      {"curveGAL", {"::sylva::rt::cpfg::curve_length", 1, 1}},
+      {"stop", {"::sylva::rt::cpfg::stop", 0, 1}},
       // The view volume (CPFG manual 5.6), with cpfg's dummy argument.
-      {"vvXmin", {"sylva_cpfg_vv<0>", 1, 1}}, {"vvXmax", {"sylva_cpfg_vv<1>", 1, 1}},
-      {"vvYmin", {"sylva_cpfg_vv<2>", 1, 1}}, {"vvYmax", {"sylva_cpfg_vv<3>", 1, 1}},
-      {"vvZmin", {"sylva_cpfg_vv<4>", 1, 1}}, {"vvZmax", {"sylva_cpfg_vv<5>", 1, 1}},
-      {"vvScale", {"sylva_cpfg_vv<6>", 1, 1}},
+      {"vvXmin", {"::sylva::rt::cpfg::view_volume<0>", 1, 1}},
+      {"vvXmax", {"::sylva::rt::cpfg::view_volume<1>", 1, 1}},
+      {"vvYmin", {"::sylva::rt::cpfg::view_volume<2>", 1, 1}},
+      {"vvYmax", {"::sylva::rt::cpfg::view_volume<3>", 1, 1}},
+      {"vvZmin", {"::sylva::rt::cpfg::view_volume<4>", 1, 1}},
+      {"vvZmax", {"::sylva::rt::cpfg::view_volume<5>", 1, 1}},
+      {"vvScale", {"::sylva::rt::cpfg::view_volume<6>", 1, 1}},
   };
   return table;
 }
@@ -175,7 +192,7 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
     Tok mode = next_token(c);
     if (mode.kind != Tok::kString) expected(c, mode, "\"r\" or \"w\"");
     expect_op(c, ")");
-    return "sylva_cpfg_fopen(" + file.text + ", " + mode.text + ")";
+    return "::sylva::rt::cpfg::fopen(" + file.text + ", " + mode.text + ")";
   }
   if (name.text == "fprintf" || name.text == "fscan" || name.text == "fscanf") {
     // fprintf(file, "format", values...) and fscan(file, "format", &var, ...):
@@ -205,14 +222,14 @@ std::string call(Cursor& c, Scope& scope, const Tok& name) {
       values.push_back(variable(var.text));
     }
     if (!scan) {
-      std::string text = "sylva_cpfg_fprintf((double)(" + file + "), " + format.text;
+      std::string text = "::sylva::rt::cpfg::fprintf((double)(" + file + "), " + format.text;
       for (const std::string& v : values) text += ", " + v;
       return text + ")";
     }
     // Read into floats (what %f and %g store), then copy into the variables.
     const std::string n = std::to_string(values.size() ? values.size() : 1);
-    std::string text = "[&]() -> double { float sylva_in[" + n + "] = {}; double sylva_read = sylva_cpfg_fscan((double)(" +
-                       file + "), " + format.text;
+    std::string text = "[&]() -> double { float sylva_in[" + n +
+                       "] = {}; double sylva_read = ::sylva::rt::cpfg::fscan((double)(" + file + "), " + format.text;
     for (std::size_t k = 0; k < values.size(); ++k) text += ", &sylva_in[" + std::to_string(k) + "]";
     text += ");";
     for (std::size_t k = 0; k < values.size(); ++k)
@@ -304,7 +321,7 @@ std::string power(Cursor& c, Scope& scope) {
   std::string left = unary(c, scope);
   while (peek_token(c).text == "^") {
     next_token(c);
-    left = "sylva_cpfg_pow(" + left + ", " + unary(c, scope) + ")";
+    left = "::sylva::rt::cpfg::pow(" + left + ", " + unary(c, scope) + ")";
   }
   return left;
 }
@@ -441,132 +458,6 @@ std::string statements(Cursor& c, Scope& scope) {
     if (t.kind == Tok::kEnd) expected(c, t, "'}'");
     text += statement(c, scope) + " ";
   }
-}
-
-std::string runtime_helpers() {
-  return R"(namespace {
-constexpr double sylva_cpfg_deg = 3.14159265358979323846 / 180.0;
-inline double sylva_cpfg_sin(double a) { return ::std::sin(a * sylva_cpfg_deg); }
-inline double sylva_cpfg_cos(double a) { return ::std::cos(a * sylva_cpfg_deg); }
-inline double sylva_cpfg_tan(double a) { return ::std::tan(a * sylva_cpfg_deg); }
-inline double sylva_cpfg_asin(double x) { return ::std::asin(x) / sylva_cpfg_deg; }
-inline double sylva_cpfg_acos(double x) { return ::std::acos(x) / sylva_cpfg_deg; }
-inline double sylva_cpfg_atan(double x) { return ::std::atan(x) / sylva_cpfg_deg; }
-inline double sylva_cpfg_atan(double x, double y) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
-inline double sylva_cpfg_atan2(double y, double x) { return ::std::atan2(y, x) / sylva_cpfg_deg; }
-inline double sylva_cpfg_pow(double x, double y) { return ::std::pow(x, y); }
-inline double sylva_cpfg_sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
-// ran, nran, bran, biran and srand: cpfg's own stream and methods (cpfg_random.h).
-::sylva::rt::cpfg::Random sylva_cpfg_random;
-inline double sylva_cpfg_ran(double x) { return sylva_cpfg_random.ran(x); }
-inline double sylva_cpfg_srand(double seed) {
-  sylva_cpfg_random.srand(seed);
-  return 0.0;
-}
-inline double sylva_cpfg_nran(double mean, double sd) { return sylva_cpfg_random.nran(mean, sd); }
-inline double sylva_cpfg_bran(double a, double b) { return sylva_cpfg_random.bran(a, b); }
-inline double sylva_cpfg_biran(double n, double p) { return sylva_cpfg_random.biran(n, p); }
-inline double sylva_cpfg_func(double id, double x) { return ::sylva::rt::cpfg_func(static_cast<int>(id), x); }
-inline double sylva_cpfg_curveX(double id, double t) { return curveX(static_cast<int>(id), static_cast<float>(t)); }
-inline double sylva_cpfg_curveY(double id, double t) { return curveY(static_cast<int>(id), static_cast<float>(t)); }
-inline double sylva_cpfg_curveZ(double id, double t) { return curveZ(static_cast<int>(id), static_cast<float>(t)); }
-inline double sylva_cpfg_curveGAL(double id) { return curveGAL(static_cast<int>(id)); }
-template <int K>
-double sylva_cpfg_vv(double) {
-  double out[7] = {0, 0, 0, 0, 0, 0, 1};
-  ::sylva::rt::ask_inputs(::sylva::abi::kQueryCpfgViewVolume, 0, nullptr, out, "the view volume");
-  return out[K];
-}
-// stop(n) (CPFG manual 5.6): the run ends after this step; without a window
-// to keep drawing in, n = 1 ("draw and continue") ends it the same way.
-inline double sylva_cpfg_stop(double = 0) {
-  Stop();
-  return 0.0;
-}
-// Files opened by the model (fopen returns 1, 2, ...; 0 when it fails).
-inline ::std::FILE* sylva_cpfg_files[64];
-inline ::std::FILE* sylva_cpfg_file(double id) {
-  const long k = ::std::lround(id);
-  return k >= 1 && k <= 64 ? sylva_cpfg_files[k - 1] : nullptr;
-}
-inline double sylva_cpfg_fopen(const char* name, const char* mode) {
-  for (int k = 0; k < 64; ++k)
-    if (!sylva_cpfg_files[k]) {
-      sylva_cpfg_files[k] = ::std::fopen(name, mode[0] == 'w' ? "w" : mode[0] == 'a' ? "a" : "r");
-      if (sylva_cpfg_files[k]) return k + 1;
-      char text[300];
-      ::std::snprintf(text, sizeof text, "fopen: cannot open %s\n", name);
-      ::sylva::rt::message(text);
-      return 0;
-    }
-  ::sylva::rt::message("fopen: too many open files\n");
-  return 0;
-}
-inline double sylva_cpfg_fclose(double id) {
-  ::std::FILE* f = sylva_cpfg_file(id);
-  if (!f) return -1;
-  sylva_cpfg_files[::std::lround(id) - 1] = nullptr;
-  return ::std::fclose(f);
-}
-inline double sylva_cpfg_fflush(double id) {
-  ::std::FILE* f = sylva_cpfg_file(id);
-  return f ? ::std::fflush(f) : -1;
-}
-template <class... Values>
-double sylva_cpfg_fprintf(double id, const char* format, Values... values) {
-  ::std::FILE* f = sylva_cpfg_file(id);
-  return f ? ::std::fprintf(f, format, values...) : -1;
-}
-template <class... Targets>
-double sylva_cpfg_fscan(double id, const char* format, Targets... targets) {
-  ::std::FILE* f = sylva_cpfg_file(id);
-  return f ? ::std::fscanf(f, format, targets...) : -1;
-}
-template <int N>
-void sylva_cpfg_format(const unsigned char* params, ::sylva::abi::TextSink* out) {
-  for (int k = 0; k < N; ++k) {
-    float v;
-    ::std::memcpy(&v, params + 4 * k, sizeof v);
-    char text[48];
-    int n = ::std::snprintf(text, sizeof text, k ? ",%g" : "%g", static_cast<double>(v));
-    out->write(text, static_cast<::std::size_t>(n));
-  }
-}
-// @L("format", p1, ...): the string quoted with C escapes, as a cpfg model writes it.
-template <int N>
-void sylva_cpfg_format_label(const unsigned char* params, ::sylva::abi::TextSink* out) {
-  const char* s = nullptr;
-  ::std::memcpy(&s, params, sizeof s);
-  out->write("\"", 1);
-  for (const char* c = s ? s : ""; *c; ++c) {
-    char text[8];
-    int n = 1;
-    switch (*c) {
-      case '"': n = 2; ::std::memcpy(text, "\\\"", 2); break;
-      case '\\': n = 2; ::std::memcpy(text, "\\\\", 2); break;
-      case '\n': n = 2; ::std::memcpy(text, "\\n", 2); break;
-      case '\t': n = 2; ::std::memcpy(text, "\\t", 2); break;
-      default:
-        if (static_cast<unsigned char>(*c) < 32 || *c == 127)
-          n = ::std::snprintf(text, sizeof text, "\\%03o", static_cast<unsigned>(static_cast<unsigned char>(*c)));
-        else
-          text[0] = *c;
-    }
-    out->write(text, static_cast<::std::size_t>(n));
-  }
-  out->write("\"", 1);
-  for (int k = 0; k < N; ++k) {
-    float v;
-    ::std::memcpy(&v, params + sizeof s + 4 * k, sizeof v);
-    char text[48];
-    int n = ::std::snprintf(text, sizeof text, ",%g", static_cast<double>(v));
-    out->write(text, static_cast<::std::size_t>(n));
-  }
-}
-// True while the derivation probes which productions apply (kModelProbeProductions).
-[[maybe_unused]] bool sylva_cpfg_probing = false;
-}  // namespace
-)";
 }
 
 }  // namespace sylva::lang::cpfg

@@ -92,7 +92,4 @@ std::string expression(Cursor& c, Scope& scope);
 // Statements up to the closing `}` (the `{` already read; the `}` is read).
 std::string statements(Cursor& c, Scope& scope);
 
-// The helpers generated models use (sylva_cpfg_sin ...), as C++ text.
-std::string runtime_helpers();
-
 }  // namespace sylva::lang::cpfg

@@ -67,8 +67,6 @@ class CpfgParser {
   }
 
   Model parse() {
-    const Pos first = lines_.empty() ? Pos{0, 1, 1} : lines_.front().pos.front();
-    model_.items.push_back(Code{verbatim(first, cpfg::runtime_helpers())});
     collect_globals();
     for (const Line& line : lines_) statement(line);
     if (!seen_lsystem_) throw ModelError(SourceLocation{model_.main_file, 1, 1}, "expected 'Lsystem:' (a cpfg model)");
@@ -591,11 +589,11 @@ class CpfgParser {
     const bool stochastic = rule.kind == abi::RuleKind::Production && blocks_.back().stochastic;
     const std::string number = std::to_string(rules_.size());
     std::string text;
-    if (stochastic) text += "if (!sylva_cpfg_probing && sylva_cpfg_chosen != " + number + ") return; ";
-    else if (rule.kind == abi::RuleKind::Production) text += "if (sylva_cpfg_probing) return; ";
+    if (stochastic) text += "if (!::sylva::rt::cpfg::probing && sylva_cpfg_chosen != " + number + ") return; ";
+    else if (rule.kind == abi::RuleKind::Production) text += "if (::sylva::rt::cpfg::probing) return; ";
     if (rule.kind == abi::RuleKind::Interpretation && !blocks_.back().homomorphism_seed.empty())
-      text += "::sylva::rt::cpfg::StreamSwap sylva_own_stream(sylva_cpfg_random.stream, sylva_cpfg_homomorphism_stream[" +
-              std::to_string(blocks_.size() - 1) + "]); ";
+      text += "::sylva::rt::cpfg::StreamSwap sylva_own_stream(::sylva::rt::cpfg::random.stream, "
+              "sylva_cpfg_homomorphism_stream[" + std::to_string(blocks_.size() - 1) + "]); ";
     if (rule.kind == abi::RuleKind::Interpretation) blocks_.back().homomorphism_rules = true;
     // cpfg keeps every variable in one table: what a production's statements
     // assign keeps its value into the next module's production (a loop that
@@ -604,7 +602,7 @@ class CpfgParser {
     text += before;
     if (condition != "true") text += "if (!(" + condition + ")) return; ";
     if (stochastic)
-      text += "if (sylva_cpfg_probing) { sylva_cpfg_applies(" + number + ", static_cast<float>(" + probability +
+      text += "if (::sylva::rt::cpfg::probing) { sylva_cpfg_applies(" + number + ", static_cast<float>(" + probability +
               ")); return; } ";
     text += after;
     if (!text.empty()) rule.body.push_back(BodyPart{BodyPart::kCode, code_at(at, text), {}, token_at(at)});
@@ -661,7 +659,7 @@ class CpfgParser {
     std::string globals = "namespace {\n";
     for (const std::string& g : globals_) globals += "[[maybe_unused]] double " + cpfg::variable(g) + " = 0;\n";
     globals += "}\n";
-    model_.items.insert(model_.items.begin() + 1, Code{verbatim(lines_.front().pos.front(), globals)});
+    model_.items.insert(model_.items.begin(), Code{verbatim(lines_.front().pos.front(), globals)});
     for (auto& [kind, body] : control_) {
       ControlStatement statement;
       statement.kind = static_cast<ControlStatement::Kind>(kind);
@@ -677,7 +675,7 @@ class CpfgParser {
     std::vector<cpfg::LsystemRandomness> lsystems;
     for (const Block& b : blocks_) lsystems.push_back(cpfg::LsystemRandomness{b.label, b.stochastic, b.production_seed, b.homomorphism_seed});
     const cpfg::RandomCode code = cpfg::random_code(lsystems, rules_.size());
-    model_.items.insert(model_.items.begin() + 1, Code{verbatim(first, code.declarations)});
+    model_.items.insert(model_.items.begin(), Code{verbatim(first, code.declarations)});
     model_.cpfg_stochastic = code.chooses;
     control_[ControlStatement::kStart] = code.start + control_[ControlStatement::kStart];
     if (!control_at_.count(ControlStatement::kStart)) control_at_[ControlStatement::kStart] = first;

@@ -7,7 +7,7 @@ namespace sylva::lang::cpfg {
 RandomCode random_code(const std::vector<LsystemRandomness>& lsystems, std::size_t rule_count) {
   RandomCode out;
   // The stream of ran() and its kin restarts with every run.
-  out.start = "sylva_cpfg_random = ::sylva::rt::cpfg::Random{}; ";
+  out.start = "::sylva::rt::cpfg::random = ::sylva::rt::cpfg::Random{}; ";
   out.declarations = "namespace {\n";
   const bool own_streams = std::any_of(lsystems.begin(), lsystems.end(),
                                        [](const LsystemRandomness& l) { return !l.homomorphism_seed.empty(); });
@@ -52,11 +52,11 @@ RandomCode random_code(const std::vector<LsystemRandomness>& lsystems, std::size
     out.declarations +=
         "void sylva_cpfg_before_module(::sylva::abi::ModuleId id) {\n"
         "  if (id != ::sylva::abi::kNoModule) {\n"
-        "    sylva_cpfg_probing = true; sylva_cpfg_count = 0; sylva_cpfg_total = 0; sylva_cpfg_chosen = -1;\n"
+        "    ::sylva::rt::cpfg::probing = true; sylva_cpfg_count = 0; sylva_cpfg_total = 0; sylva_cpfg_chosen = -1;\n"
         "    if (" + draws + ") sylva_cpfg_u = ::sylva::rt::next_rand48();\n"
         "    return;\n"
         "  }\n"
-        "  sylva_cpfg_probing = false;\n"
+        "  ::sylva::rt::cpfg::probing = false;\n"
         "  float r = static_cast<float>(sylva_cpfg_total * sylva_cpfg_u);\n"
         "  for (int k = 0; k < sylva_cpfg_count; ++k)\n"
         "    if ((r -= sylva_cpfg_applicable[k].p) <= 0) { sylva_cpfg_chosen = sylva_cpfg_applicable[k].rule; break; }\n"

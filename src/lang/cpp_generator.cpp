@@ -168,6 +168,23 @@ class CppGenerator {
     text += " out->write(\"}\"); }";
     out_.at(s.at, text);
     out_.at(s.at, struct_parser(s));
+    out_.at(s.at, struct_layout(s));
+  }
+
+  // The fields' types and offsets for the model ABI. A template, so that a
+  // field whose place cannot be taken (a bit-field) is listed without a type
+  // instead of failing to compile.
+  static std::string struct_layout(const StructFields& s) {
+    std::string text = "template <class SylvaS> requires ::std::is_same_v<SylvaS, " + s.name +
+                       "> inline ::sylva::rt::FieldList sylva_struct_fields(const SylvaS*) {"
+                       " static const ::sylva::abi::ParamField sylva_fields[] = {";
+    for (const std::string& field : s.fields)
+      text += " [] { if constexpr (requires { &SylvaS::" + field + "; })" +
+              " return ::sylva::rt::param_field<decltype(SylvaS::" + field + ")>(" + quoted(field) +
+              ", __builtin_offsetof(SylvaS, " + field + "));" +
+              " else return ::sylva::abi::ParamField{" + quoted(field) + ", 0, nullptr}; }(),";
+    text += " }; return {sylva_fields, " + std::to_string(s.fields.size()) + "}; }";
+    return text;
   }
 
   // One field: read in place, through a copy for a bit-field, an error for a
@@ -231,7 +248,8 @@ class CppGenerator {
     int index = static_cast<int>(rules_.size());
     rules_.push_back(&rule);
     std::string text = "static void sylva_rule_" + std::to_string(index) +
-                       "(::sylva::abi::RuleCall* sylva_call, const unsigned char* const* sylva_params) {";
+                       "([[maybe_unused]] ::sylva::abi::RuleCall* sylva_call,"
+                       " [[maybe_unused]] const unsigned char* const* sylva_params) {";
     int slot = 0;
     for (const auto& part : rule.parts) {
       for (const PatternModule& m : part) {
@@ -355,17 +373,11 @@ class CppGenerator {
     for (std::size_t k = 0; k < model_.modules.size(); ++k) {
       const ModuleDecl& m = model_.modules[k];
       const std::string& shown = m.display_name.empty() ? m.name : m.display_name;
-      if (model_.cpfg && k >= predefined && !m.param_types.empty() && m.param_types[0] == "const char*") {
-        // @L("format", p1, ...): the string as cpfg writes it, then the floats.
-        const std::size_t floats = m.param_types.size() - 1;
-        t += "  ::sylva::abi::ModuleType{" + quoted(shown) + ", " + std::to_string(sizeof(const char*) + 4 * floats) +
-             "u, &sylva_cpfg_format_label<" + std::to_string(floats) + ">},\n";
-        continue;
-      }
       if (model_.cpfg && k >= predefined) {
-        // cpfg prints every parameter as %g of its float.
-        t += "  ::sylva::abi::ModuleType{" + quoted(shown) + ", " + std::to_string(4 * m.param_types.size()) +
-             "u, &sylva_cpfg_format<" + std::to_string(m.param_types.size()) + ">},\n";
+        // @L("format", p1, ...) holds its text, then floats; other modules only floats.
+        const bool label = !m.param_types.empty() && m.param_types[0] == "const char*";
+        t += std::string("  ::sylva::rt::cpfg::") + (label ? "label_module_type<" : "float_module_type<") +
+             std::to_string(m.param_types.size() - (label ? 1 : 0)) + ">(" + quoted(shown) + "),\n";
         continue;
       }
       t += std::string("  ::sylva::rt::") + (k < predefined ? "predefined_module_type<" : "module_type<") +
@@ -462,14 +474,11 @@ class CppGenerator {
          id_or_none(model_.return_module) + ",\n";
     t += "    " + std::string(model_.verify_string.empty() ? "nullptr" : "sylva_verify_string") + ", " +
          (model_.has_verify_string ? std::to_string(model_.verify_string.size()) : std::string("-1")) + ",\n";
+    t += "    " + std::string(model_.gillespie_groups.empty() ? "nullptr" : "sylva_gillespie_groups") + ", " +
+         std::to_string(model_.gillespie_groups.size()) + ",\n";
+    t += "    " + std::string(model_.groups.empty() ? "nullptr" : "sylva_groups") + ", " +
+         std::to_string(model_.groups.size()) + ",\n";
     t += "  };\n";
-    // Fields set by name, whatever their place in the list above.
-    if (!model_.gillespie_groups.empty())
-      t += "  descriptor.gillespie_groups = sylva_gillespie_groups;\n  descriptor.gillespie_group_count = " +
-           std::to_string(model_.gillespie_groups.size()) + ";\n";
-    if (!model_.groups.empty())
-      t += "  descriptor.groups = sylva_groups;\n  descriptor.group_count = " + std::to_string(model_.groups.size()) +
-           ";\n";
     t += "  return &descriptor;\n}\n";
     out_.block(t);
   }

@@ -66,10 +66,11 @@ Translation translate_cpfg(const std::string& model_path, const TranslatorOption
   if (pre.exit_code != 0) preprocessor_failed(model_path, pre);
   Model model = parse_cpfg(pre.out, model_path);
 
-  // The generated C++ needs the runtime: lpfgall.h, preprocessed in front of it.
+  // The generated C++ needs the runtime: lpfgall.h and cpfg's helpers,
+  // preprocessed in front of it.
   std::vector<std::string> rt = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1",
                                  "-isystem", options.runtime_include_dir, "-include", "lpfgall.h",
-                                 "-include", "sylva/runtime/cpfg_random.h", "/dev/null"};
+                                 "-include", "sylva/runtime/cpfg_helpers.h", "/dev/null"};
   ProcessResult runtime = run_process(rt);
   if (runtime.exit_code != 0) preprocessor_failed(model_path, runtime);
 

@@ -1,5 +1,7 @@
 #include "lstring/module_types.h"
 
+#include <cstring>
+
 namespace sylva {
 
 ModuleTypes::ModuleTypes(std::vector<Type> types) : types_(std::move(types)) {
@@ -14,12 +16,15 @@ ModuleTypes ModuleTypes::from_model(const abi::ModelDescriptor& model) {
   const abi::ModuleType* predefined = predefined_module_types(&predefined_count);
   std::vector<Type> types;
   for (std::uint32_t k = 0; k < model.module_count; ++k) {
-    auto format = model.modules[k].format_params;
-    auto parse = model.modules[k].parse_params;
+    const abi::ModuleType& type = model.modules[k];
+    auto format = type.format_params;
+    auto parse = type.parse_params;
+    auto params = type.params;
     const bool engine_supplies = k < model.predefined_count && k < predefined_count;
     if (!format && engine_supplies) format = predefined[k].format_params;
     if (!parse && engine_supplies && !(model.flags & abi::kModelCpfg)) parse = predefined[k].parse_params;
-    types.push_back(Type{model.modules[k].name, model.modules[k].param_size, format, model.modules[k].param_count, parse});
+    if (!params && engine_supplies) params = predefined[k].params;
+    types.push_back(Type{type.name, type.param_size, format, type.param_count, parse, params});
   }
   ModuleTypes result(std::move(types));
   result.set_cpfg((model.flags & abi::kModelCpfg) != 0);
@@ -30,6 +35,67 @@ std::optional<ModuleId> ModuleTypes::find(std::string_view name) const {
   auto it = by_name_.find(std::string(name));
   if (it == by_name_.end()) return std::nullopt;
   return it->second;
+}
+
+std::span<const abi::ParamField> ModuleTypes::params(ModuleId id) const {
+  const Type& type = types_[id];
+  if (!type.params) return {};
+  return {type.params, type.param_count};
+}
+
+namespace {
+
+template <class T>
+T load(const unsigned char* at) {
+  T value;
+  std::memcpy(&value, at, sizeof value);
+  return value;
+}
+
+template <class Signed, class Unsigned>
+double integer_value(bool is_signed, const unsigned char* at) {
+  return is_signed ? static_cast<double>(load<Signed>(at)) : static_cast<double>(load<Unsigned>(at));
+}
+
+double integer_value(const abi::ParamType& type, const unsigned char* at) {
+  const bool is_signed = type.kind == abi::ParamKind::kSigned;
+  switch (type.size) {
+    case 1: return integer_value<std::int8_t, std::uint8_t>(is_signed, at);
+    case 2: return integer_value<std::int16_t, std::uint16_t>(is_signed, at);
+    case 4: return integer_value<std::int32_t, std::uint32_t>(is_signed, at);
+    default: return integer_value<std::int64_t, std::uint64_t>(is_signed, at);
+  }
+}
+
+void append_numbers(const abi::ParamType& type, const unsigned char* at, std::vector<double>& out) {
+  using abi::ParamKind;
+  switch (type.kind) {
+    case ParamKind::kFloat: out.push_back(load<float>(at)); break;
+    case ParamKind::kDouble: out.push_back(load<double>(at)); break;
+    case ParamKind::kLongDouble: out.push_back(static_cast<double>(load<long double>(at))); break;
+    case ParamKind::kBool: out.push_back(load<bool>(at) ? 1 : 0); break;
+    case ParamKind::kSigned:
+    case ParamKind::kUnsigned: out.push_back(integer_value(type, at)); break;
+    case ParamKind::kEnum: append_numbers(*type.element, at, out); break;
+    case ParamKind::kVector:
+    case ParamKind::kArray:
+      for (std::uint32_t k = 0; k < type.count; ++k) append_numbers(*type.element, at + k * type.element->size, out);
+      break;
+    case ParamKind::kStruct:
+      for (std::uint32_t k = 0; k < type.field_count; ++k)
+        if (const abi::ParamField& field = type.fields[k]; field.type) append_numbers(*field.type, at + field.offset, out);
+      break;
+    case ParamKind::kText:
+    case ParamKind::kOther: break;
+  }
+}
+
+}  // namespace
+
+std::vector<double> ModuleTypes::numbers(ModuleId id, const unsigned char* params) const {
+  std::vector<double> out;
+  for (const abi::ParamField& param : this->params(id)) append_numbers(*param.type, params + param.offset, out);
+  return out;
 }
 
 void ModuleTypes::format_params(ModuleId id, const unsigned char* params, std::string& out) const {

@@ -1,9 +1,11 @@
-// The registry of module types: names, parameter sizes and printers, indexed
-// by module id. It comes from a compiled model, or is built by hand in tests.
+// The registry of module types: names, parameters (their types and offsets,
+// their saved-string printer and reader), indexed by module id. It comes from
+// a compiled model, or is built by hand in tests.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -24,6 +26,9 @@ class ModuleTypes {
     // Reading the parameters back (null: they cannot be; cpfg's modules).
     std::uint32_t param_count = 0;
     bool (*parse_params)(abi::TextSource*, unsigned char*) = nullptr;
+    // The parameters' types and offsets, param_count of them (null: not
+    // known, as in types built by hand).
+    const abi::ParamField* params = nullptr;
   };
 
   ModuleTypes() = default;
@@ -40,6 +45,14 @@ class ModuleTypes {
   // The model is cpfg's: its strings are written in cpfg's format.
   bool cpfg() const { return cpfg_; }
   void set_cpfg(bool cpfg) { cpfg_ = cpfg; }
+
+  // The parameters' types and offsets; empty when they are not known.
+  std::span<const abi::ParamField> params(ModuleId id) const;
+  // The numbers a module's parameter block holds, in declaration order:
+  // every number, bool (0 or 1) and enum; a vector's, an array's and a
+  // struct's known fields' numbers in turn. Text and values of unknown
+  // layout hold none.
+  std::vector<double> numbers(ModuleId id, const unsigned char* params) const;
 
   // "p1,p2" for a module's parameter block.
   void format_params(ModuleId id, const unsigned char* params, std::string& out) const;

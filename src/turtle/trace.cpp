@@ -3,22 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <string_view>
 
+#include "lstring/module_types.h"
 #include "sylva/predefined_ids.h"
 
 namespace sylva::turtle {
 namespace {
-
-const char* const kNames[] = {
-#define SYLVA_MODULE(name, ...) #name,
-#include "sylva/predefined_modules.def"
-};
-// Each module's parameter types as the list spells them, e.g. "V3f, float".
-const char* const kParameterTypes[] = {
-#define SYLVA_MODULE(name, ...) "" #__VA_ARGS__,
-#include "sylva/predefined_modules.def"
-};
 
 template <class T>
 T read(const unsigned char* p) {
@@ -27,39 +17,38 @@ T read(const unsigned char* p) {
   return v;
 }
 
-// Appends one parameter of type `type` at `p`; returns its size, or 0 for
-// structures shown only as "{...}" (always a module's last parameter).
-std::size_t append_parameter(std::string& out, std::string_view type, const unsigned char* p) {
-  if (type == "float") {
-    append_number(out, read<float>(p));
-    return 4;
-  }
-  if (type == "int") {
-    out += std::to_string(read<int>(p));
-    return 4;
-  }
-  if (type == "V2f" || type == "V3f" || type == "V2d" || type == "V3d") {
-    const bool wide = type[2] == 'd';
-    const int n = type[1] - '0';
-    const std::size_t size = wide ? 8 : 4;
-    out += '(';
-    for (int k = 0; k < n; ++k) {
-      if (k) out += ',';
-      const unsigned char* c = p + static_cast<std::size_t>(k) * size;
-      append_number(out, wide ? read<double>(c) : static_cast<double>(read<float>(c)));
+// Appends one parameter; false for structures shown only as "{...}" (always a
+// module's last parameter).
+bool append_parameter(std::string& out, const abi::ParamType& type, const unsigned char* p) {
+  switch (type.kind) {
+    case abi::ParamKind::kFloat:
+      append_number(out, read<float>(p));
+      return true;
+    case abi::ParamKind::kSigned:
+      if (type.size != sizeof(int)) break;
+      out += std::to_string(read<int>(p));
+      return true;
+    case abi::ParamKind::kVector:
+      out += '(';
+      for (std::uint32_t k = 0; k < type.count; ++k) {
+        if (k) out += ',';
+        const unsigned char* c = p + k * type.element->size;
+        append_number(out, type.element->kind == abi::ParamKind::kDouble ? read<double>(c) : read<float>(c));
+      }
+      out += ')';
+      return true;
+    case abi::ParamKind::kText: {
+      const char* text = read<const char*>(p);
+      out += '"';
+      out += text ? text : "";
+      out += '"';
+      return true;
     }
-    out += ')';
-    return static_cast<std::size_t>(n) * size;
-  }
-  if (type == "const char*") {
-    const char* text = read<const char*>(p);
-    out += '"';
-    out += text ? text : "";
-    out += '"';
-    return sizeof(const char*);
+    default:
+      break;
   }
   out += "{...}";
-  return 0;
+  return false;
 }
 
 }  // namespace
@@ -84,23 +73,14 @@ void append_vector(std::string& out, geometry::Vec3 v) {
 
 void append_module(std::string& out, abi::ModuleId id, const unsigned char* params) {
   if (id >= rt::mid::PredefinedCount) return;
-  out += kNames[id];
-  std::string_view types = kParameterTypes[id];
-  if (types.empty()) return;
+  std::size_t count = 0;
+  const abi::ModuleType& type = predefined_module_types(&count)[id];
+  out += type.name;
+  if (type.param_count == 0) return;
   out += '(';
-  const unsigned char* p = params;
-  bool first = true;
-  while (!types.empty()) {
-    std::size_t comma = types.find(',');
-    std::string_view type = types.substr(0, comma);
-    types = comma == std::string_view::npos ? std::string_view{} : types.substr(comma + 1);
-    while (!type.empty() && type.front() == ' ') type.remove_prefix(1);
-    while (!type.empty() && type.back() == ' ') type.remove_suffix(1);
-    if (!first) out += ',';
-    first = false;
-    const std::size_t size = append_parameter(out, type, p);
-    if (size == 0) break;
-    p += size;
+  for (std::uint32_t k = 0; k < type.param_count; ++k) {
+    if (k) out += ',';
+    if (!append_parameter(out, *type.params[k].type, params + type.params[k].offset)) break;
   }
   out += ')';
 }

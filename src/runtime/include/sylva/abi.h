@@ -1,10 +1,10 @@
 // The binary interface between the engine and a compiled model.
 //
 // A compiled model is a shared library exporting one C function,
-// `sylva_model_v1`, that returns a ModelDescriptor: its module types, its
-// rules with their patterns and body functions, and its control statements.
-// The engine owns the strings; the model only reads parameter blocks and
-// appends modules to a ModuleBuffer. Everything here is plain data so the
+// `sylva_model_v1`, that returns a ModelDescriptor: its module types (with
+// their parameters' types and offsets), its rules with their patterns and
+// body functions, and its control statements. The engine owns the strings;
+// the model only reads parameter blocks and appends modules to a ModuleBuffer. Everything here is plain data so the
 // header stays cheap to compile into every model.
 #pragma once
 
@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 9;
+inline constexpr std::uint32_t kAbiVersion = 10;
 
 using ModuleId = std::uint16_t;
 
@@ -56,16 +56,57 @@ struct TextSource {
   const char* expected = nullptr;  // on failure: what was expected there
 };
 
+// What a parameter is: a module's parameter, a struct's field, a vector's
+// coordinate or an array's element.
+enum class ParamKind : std::uint8_t {
+  kFloat,
+  kDouble,
+  kLongDouble,
+  kBool,
+  kSigned,    // a signed integer (char, short, int, long ...)
+  kUnsigned,  // an unsigned integer
+  kEnum,      // `element` is its underlying integer type
+  kVector,    // V2f ... V3d: `count` coordinates of type `element`
+  kArray,     // `count` elements of type `element`, `element->size` bytes apart
+  kStruct,    // `fields` are those the model's source lists (none: its layout is unknown)
+  kText,      // a pointer to a NUL-terminated string (a label's text)
+  kOther,     // anything else (other pointers, unions ...): only bytes
+};
+
+struct ParamField;
+
+struct ParamType {
+  ParamKind kind;
+  std::uint32_t size;
+  const ParamType* element = nullptr;
+  std::uint32_t count = 0;
+  const ParamField* fields = nullptr;
+  std::uint32_t field_count = 0;
+};
+
+// A module's parameter (unnamed, at its offset in the parameter block) or a
+// struct's field (at its offset in the struct). `type` is null for a field
+// whose place is not known (a bit-field, a reference).
+struct ParamField {
+  const char* name;
+  std::uint32_t offset;
+  const ParamType* type;
+};
+
 struct ModuleType {
   const char* name;
   std::uint32_t param_size;
-  // Appends the parameters as "p1,p2,..." (no parentheses).
+  // The saved-string text of the parameters, "p1,p2,..." without
+  // parentheses (null for a predefined module: the engine has its own).
   void (*format_params)(const unsigned char* params, TextSink* out);
-  // Added in ABI version 4: reading back what format_params wrote. Reads
-  // `param_count` values separated by commas into `params` and stops before
-  // the closing parenthesis; false (with `in->expected` set) on bad text.
   std::uint32_t param_count;
+  // Reads back what format_params wrote: `param_count` values separated by
+  // commas into `params`, stopping before the closing parenthesis; false
+  // (with `in->expected` set) on bad text. Null: they cannot be read back.
   bool (*parse_params)(TextSource* in, unsigned char* params);
+  // The parameters' types and offsets, `param_count` of them (null for a
+  // predefined module: the engine has its own).
+  const ParamField* params;
 };
 
 enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2 };
@@ -77,18 +118,17 @@ enum PatternPart : int { kNewLeft = 0, kLeft, kStrict, kRight, kNewRight, kPatte
 struct RuleCall {
   ModuleBuffer* out;   // the successor is appended here
   bool produced;       // set by `produce`
-  // Added in ABI version 5: in a step using a Gillespie group (LPFG manual
-  // 7.2) a body offers reactions instead of producing. `propensity p produce
-  // S;` appends S to `out`, calls propose, and removes S again; the engine
-  // takes as the reaction's successor what `out` held since the body began
-  // (nproduce'd modules, then S). Null outside such a step.
+  // In a step using a Gillespie group (LPFG manual 7.2) a body offers
+  // reactions instead of producing. `propensity p produce S;` appends S to
+  // `out`, calls propose, and removes S again; the engine takes as the
+  // reaction's successor what `out` held since the body began (nproduce'd
+  // modules, then S). Null outside such a step.
   void* reactions = nullptr;
   void (*propose)(RuleCall* call, double propensity) = nullptr;
-  // Added in ABI version 7: InLeftContext(...) and its kin (LPFG manual 3.3)
-  // ask here whether the n modules of `pattern` (a PatternPart: kLeft,
-  // kRight, kNewLeft or kNewRight) follow in the context; on success
-  // params[k] points at the parameters of the module matched by pattern[k].
-  // Null: every test is false.
+  // InLeftContext(...) and its kin (LPFG manual 3.3) ask here whether the n
+  // modules of `pattern` (a PatternPart: kLeft, kRight, kNewLeft or
+  // kNewRight) follow in the context; on success params[k] points at the
+  // parameters of the module matched by pattern[k]. Null: every test is false.
   void* context = nullptr;
   bool (*in_context)(void* context, int part, const ModuleId* pattern, int n, const unsigned char** params) = nullptr;
 };
@@ -103,8 +143,8 @@ struct Rule {
   void (*body)(RuleCall* call, const unsigned char* const* params);
   const char* file;
   int line;
-  // Added in ABI version 4: the vgroup (LPFG manual 7.3) of an interpretation
-  // rule; 0 outside any vgroup. Drawing view v uses vgroup v, then vgroup 0.
+  // The vgroup (LPFG manual 7.3) of an interpretation rule; 0 outside any
+  // vgroup. Drawing view v uses vgroup v, then vgroup 0.
   int view;
 };
 
@@ -134,26 +174,26 @@ struct ControlState {
   // arguments and results. Null when the model runs without input files.
   void* inputs = nullptr;
   bool (*input_query)(void* inputs, int query, int id, const double* in, double* out) = nullptr;
-  // Added in ABI version 4: what a model asks the engine to do (a
-  // ModelRequest) with a view number or a file name; null: nothing is done.
+  // What a model asks the engine to do (a ModelRequest) with a view number
+  // or a file name; null: nothing is done.
   void* requests = nullptr;
   void (*request)(void* requests, int request, int value, const char* file) = nullptr;
-  // Added in ABI version 5: Gillespie groups. The state of their own random
-  // generator (erand48's, as rand48; SeedGillespie sets it, ran() does not
-  // touch it) and, from ABI version 8, the time of the Gillespie steps so far
-  // (GillespieTime: the sum of the times to each reaction, as lpfg keeps it).
+  // Gillespie groups: the state of their own random generator (erand48's,
+  // as rand48; SeedGillespie sets it, ran() does not touch it) and the time
+  // of the Gillespie steps so far (GillespieTime: the sum of the times to
+  // each reaction, as lpfg keeps it).
   std::uint64_t gillespie_random = 0;
   double gillespie_time = 0;
-  // Added in ABI version 6: Environment() / NoEnvironment() (LPFG manual
-  // 6.1.3): whether the environmental pass follows the current step.
+  // Environment() / NoEnvironment() (LPFG manual 6.1.3): whether the
+  // environmental pass follows the current step.
   bool environment = true;
-  // Added in ABI version 7: where the UseGroup call that set next_group is
-  // (the model's file and line), so a group the model lacks can be reported there.
+  // Where the UseGroup call that set next_group is (the model's file and
+  // line), so a group the model lacks can be reported there.
   const char* group_call_file = nullptr;
   int group_call_line = 0;
-  // Added in ABI version 9: a cpfg model's stochastic productions are chosen
-  // from its seed: as cpfg's window seeds drand48 (seed48({seed, 0, 155}));
-  // false: as cpfg's batch runs (-g), which never seed it (state 0).
+  // A cpfg model's stochastic productions are chosen from its seed: as
+  // cpfg's window seeds drand48 (seed48({seed, 0, 155})); false: as cpfg's
+  // batch runs (-g), which never seed it (state 0).
   bool cpfg_window_seeding = false;
 };
 
@@ -194,14 +234,12 @@ enum InputQuery : int {
   kQueryCurveRecalculate,   // in: -                  out: -
   kQueryCurveReset,         // in: -                  out: -
   kQueryParameter,          // in: -                  out: value (val, LPFG manual 6.2.1)
-  // Added in ABI version 8.
   kQueryTimelineFunction,   // in: x                  out: y (tfunc: x mapped from the limits to [0,1])
   kQueryFunctionLimits,     // in: min, max           out: - (pfunc sets them, for good)
   kQueryCpfgFunction,       // in: x                  out: y (cpfg's func, in double)
   kQuerySurfacePoint,       // in: point              out: x, y, z (point 16p + k: patch p's k-th)
-  // Added in ABI version 9: cpfg's vvXmin() ... vvScale() as a batch run
-  // has them: no window, so the x and y extents are 0; the view file's front
-  // and back distance and scale.
+  // cpfg's vvXmin() ... vvScale() as a batch run has them: no window, so the
+  // x and y extents are 0; the view file's front and back distance and scale.
   kQueryCpfgViewVolume,     // in: -                  out: xmin, xmax, ymin, ymax, zmin, zmax, scale
 };
 
@@ -228,7 +266,6 @@ struct ModelDescriptor {
   void (*start_each)();
   void (*end_each)();
   void (*end)();
-  // Added in ABI version 2.
   std::uint32_t flags;  // kModelCpfg ...
   // Called by a forward derivation step for every module of the old string
   // before its productions are tried (cpfg's stochastic draw); may be null.
@@ -238,9 +275,9 @@ struct ModelDescriptor {
   // For sub-L-system models, ControlState::current_group holds the label of
   // the module's L-system during the call.
   void (*before_module)(ModuleId id);
-  // Added in ABI version 3: cpfg's sub-L-systems (CPFG manual 7.2), when
-  // flags has kModelSubLsystems. Rule::group is then the label of the
-  // L-system a rule belongs to; `?(label,s)` (call_module) hands the modules
+  // cpfg's sub-L-systems (CPFG manual 7.2), when flags has
+  // kModelSubLsystems. Rule::group is then the label of the L-system a rule
+  // belongs to; `?(label,s)` (call_module) hands the modules
   // after it to L-system `label` until its `$` (return_module), and a module
   // is rewritten only by its own L-system's rules (no fallback to another).
   int main_lsystem;              // the label of the first L-system
@@ -248,16 +285,16 @@ struct ModelDescriptor {
   std::uint32_t lsystem_count;
   ModuleId call_module;          // ?(label,s); kNoModule if the model has none
   ModuleId return_module;        // $ without parameters; kNoModule if none
-  // Added in ABI version 4: VerifyString: (LPFG manual 10.4), the module
-  // names the derived string must have; verify_length is -1 without one.
+  // VerifyString: (LPFG manual 10.4), the module names the derived string
+  // must have; verify_length is -1 without one.
   const ModuleId* verify_string;
   std::int32_t verify_length;
-  // Added in ABI version 5: the numbers of the Gillespie groups (ggroup N:,
-  // LPFG manual 7.2); a step whose group is one of them fires one reaction.
+  // The numbers of the Gillespie groups (ggroup N:, LPFG manual 7.2); a step
+  // whose group is one of them fires one reaction.
   const int* gillespie_groups;
   std::uint32_t gillespie_group_count;
-  // Added in ABI version 7: the numbers of the groups the model defines
-  // (group N:, ggroup N:; 0 always exists), which UseGroup may select.
+  // The numbers of the groups the model defines (group N:, ggroup N:; 0
+  // always exists), which UseGroup may select.
   const int* groups;
   std::uint32_t group_count;
 };

@@ -2,7 +2,8 @@
 //
 // The translator turns `produce A(x) B;` into calls of `put_module<...>` and the
 // formal parameters of a predecessor into `param<I, ...>` reads; the module
-// table it generates uses `format_params<...>`. Parameters are packed in
+// table it generates uses `module_type<...>`: the parameters' types
+// (param_types.h), their printer and their reader. Parameters are packed in
 // declaration order without padding (see sylva/abi.h).
 #pragma once
 
@@ -154,22 +155,24 @@ void format_params(const unsigned char* params, abi::TextSink* out) {
 
 }  // namespace sylva::rt
 
+#include <sylva/runtime/param_types.h>
 #include <sylva/runtime/parse_params.h>
 
 namespace sylva::rt {
 
 template <class... T>
-constexpr abi::ModuleType module_type(const char* name) {
+abi::ModuleType module_type(const char* name) {
   return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>,
-                         static_cast<std::uint32_t>(sizeof...(T)), &parse_params<T...>};
+                         static_cast<std::uint32_t>(sizeof...(T)), &parse_params<T...>, param_fields<T...>()};
 }
 
-// A predefined module's entry: the engine supplies its printer and reader, so
-// models do not compile them for each of the predefined modules.
+// A predefined module's entry: the engine supplies its printer, reader and
+// parameters' types, so models do not compile them for each of the
+// predefined modules.
 template <class... T>
 constexpr abi::ModuleType predefined_module_type(const char* name) {
   return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), nullptr,
-                         static_cast<std::uint32_t>(sizeof...(T)), nullptr};
+                         static_cast<std::uint32_t>(sizeof...(T)), nullptr, nullptr};
 }
 
 }  // namespace sylva::rt
