@@ -4,8 +4,9 @@
 // own terms; where L+C and cpfg mean different things by the same kind of
 // module, the decoder has already settled it, or an argument here says so.
 //
-// Decoding and executing go module by module, the command on the stack:
-// the stream is never stored.
+// Decoding and executing go module by module, each command passed with its
+// own type from the decoder to the dispatcher (command_runner.h): the stream
+// is never stored. TurtleCommand, any one command, is for looking at them.
 #pragma once
 
 #include <cstdint>
@@ -305,34 +306,43 @@ using TurtleCommand = std::variant<
     command::CylinderTangents, command::RadiusTangents, command::RadiusAdjust, command::SetTexture,
     command::TextureVCoeff, command::SetElasticity, command::SimpleElasticity, command::Query>;
 
+// Keeps the command a decoder sends it, to be looked at rather than executed.
+struct CommandRecorder {
+  template <class Command>
+  void operator()(const Command& c) {
+    command = c;
+  }
+  TurtleCommand command;
+};
+
 // What a command did that neither the command nor the turtle after it
-// shows: what the trace tells besides them.
+// shows: what the trace tells besides them. Commands that always do just
+// what they say report nothing (their dispatcher run returns void). Small,
+// as it is made for every command that reports.
 struct CommandResult {
   // Why the command was ignored (then nothing else here is set), or a
   // remark on a rotation.
   const char* note = nullptr;
   // A move's or a line's ends.
   Vec3 from, to;
+  // A surface's or mesh's name.
+  const char* name = "";
+  // An elasticity after its change.
+  float value = 0;
   // StartPolygon: the polygon's depth; PolygonVertex and Forward in a
   // polygon: the vertex's number; EndPolygon: the polygon's vertices. 0: none.
   int polygon = 0;
   // The cylinder control point added (CylinderPoint, CylinderDot, Forward in
   // a {(type) cylinder) or, `strips_only`, whose strips CylinderDot set. 0: none.
   int cylinder_point = 0;
-  bool strips_only = false;
-  // A cylinder this command ended: its rings and sides (-1: none).
-  int closed_rings = -1, closed_sides = 0;
-  // EndCylinder: the type of the {(type) it ended (0: @Gs or StartGC).
-  int opened_type = 0;
   // The triangles drawn; -1: nothing was drawn (no Scene, or a polygon of
   // fewer than 3 vertices).
   int triangles = -1;
-  // A surface's or mesh's name.
-  std::string_view name;
-  // A circle's or sphere's radius; an elasticity after its change.
-  float value = 0;
-  // A query's answer.
-  Vec3 answer;
+  // A cylinder this command ended: its rings and sides (-1: none ended).
+  int closed_rings = -1, closed_sides = 0;
+  // EndCylinder: the type of the {(type) it ended (0: @Gs or StartGC).
+  int opened_type = 0;
+  bool strips_only = false;
 };
 
 // A command that did nothing, or a rotation that left the frame unchanged,

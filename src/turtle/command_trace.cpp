@@ -84,12 +84,12 @@ class CommandText {
   void done(const SetCoordinateSystem&) { vector(" origin ", state_.origin); }
   void done(const SetColor& c) { back_colour(c.back_side); }
   void done(const StepColor& c) { back_colour(c.back_side); }
-  void done(const Circle&) { round_shape(); }
-  void done(const Sphere&) { round_shape(); }
-  void round_shape() {
+  void done(const Circle& c) { round_shape(c.radius); }
+  void done(const Sphere& c) { round_shape(c.radius); }
+  void round_shape(const std::optional<float>& radius) {
     at();
     out_ += " radius ";
-    append_number(out_, r_.value);
+    append_number(out_, CommandDispatcher::radius(state_, radius));
   }
   void done(const Rhombus&) { shape(); }
   void done(const Triangle&) { shape(); }
@@ -148,9 +148,9 @@ class CommandText {
     out_ += " elasticity ";
     append_number(out_, r_.value);
   }
-  void done(const Query&) {
+  void done(const Query& c) {
     out_ += turtle_.in_string() ? " = " : " not in the string: ";
-    append_vector(out_, r_.answer);
+    append_vector(out_, CommandDispatcher::quantity(state_, c.quantity));
   }
   // The rest change the turtle's settings only.
   template <class Command>

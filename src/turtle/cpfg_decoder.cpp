@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "support/diagnostic.h"
+#include "turtle/command_runner.h"
 #include "turtle/model_error_text.h"
 #include "turtle/trace.h"
 
@@ -68,7 +69,8 @@ CpfgOp CpfgDecoder::read_op(ModuleId id) {
   return op;
 }
 
-bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t source_index, TurtleCommand& command) {
+template <class Emit>
+bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t source_index, Emit& emit) {
   using O = CpfgOp;
   using namespace command;
   const CpfgOp op = read_op(id);
@@ -86,54 +88,54 @@ bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t sour
   };
   // A generalized cylinder's strips (@Gc, .(strips), @Ge): its parameter or 1.
   auto strips = [&] { return n > 0 ? static_cast<int>(std::lround(std::clamp(param(p, 0), 1.0f, 1000.0f))) : 1; };
-  auto ignored = [&](const char* why) { command = Note{why}; };
+  auto ignored = [&](const char* why) { emit(Note{why}); };
   switch (op) {
     case O::None:
     case O::Prefix: break;
-    case O::Push: command = Push{}; break;
-    case O::Pop: command = Pop{}; break;
+    case O::Push: emit(Push{}); break;
+    case O::Pop: emit(Pop{}); break;
 
-    case O::Forward: command = Forward{step(), true, true}; break;
-    case O::Move: command = Forward{step(), false, true}; break;
-    case O::ForwardNoVertex: command = Forward{step(), true, false}; break;
-    case O::MoveNoVertex: command = Forward{step(), false, false}; break;
+    case O::Forward: emit(Forward{step(), true, true}); break;
+    case O::Move: emit(Forward{step(), false, true}); break;
+    case O::ForwardNoVertex: emit(Forward{step(), true, false}); break;
+    case O::MoveNoVertex: emit(Forward{step(), false, false}); break;
     case O::MoveTo:
-      command = MoveTo{Vec3{n > 0 ? param(p, 0) : 0, n > 1 ? param(p, 1) : 0, n > 2 ? param(p, 2) : 0},
-                       Coordinates::World, std::min(n, 3)};
+      emit(MoveTo{Vec3{n > 0 ? param(p, 0) : 0, n > 1 ? param(p, 1) : 0, n > 2 ? param(p, 2) : 0},
+                       Coordinates::World, std::min(n, 3)});
       break;
 
-    case O::Left: command = Turn{Axis::Up, angle()}; break;
-    case O::Right: command = Turn{Axis::Up, -angle()}; break;
-    case O::Down: command = Turn{Axis::Left, angle()}; break;
-    case O::Up: command = Turn{Axis::Left, -angle()}; break;
-    case O::RollLeft: command = Turn{Axis::Heading, angle()}; break;
-    case O::RollRight: command = Turn{Axis::Heading, -angle()}; break;
-    case O::TurnAround: command = TurnAround{}; break;
+    case O::Left: emit(Turn{Axis::Up, angle()}); break;
+    case O::Right: emit(Turn{Axis::Up, -angle()}); break;
+    case O::Down: emit(Turn{Axis::Left, angle()}); break;
+    case O::Up: emit(Turn{Axis::Left, -angle()}); break;
+    case O::RollLeft: emit(Turn{Axis::Heading, angle()}); break;
+    case O::RollRight: emit(Turn{Axis::Heading, -angle()}); break;
+    case O::TurnAround: emit(TurnAround{}); break;
     // The end of a sub-L-system: the caller's scale again. cpfg's $ does
     // nothing else (interpret.c): it never rolls the turtle.
     case O::SubLsystemReturn:
-      if (n == 0) command = ReturnFromSubLsystem{};
-      else command = Note{};
+      if (n == 0) emit(ReturnFromSubLsystem{});
+      else emit(Note{});
       break;
-    case O::RollToVertical: command = RollToVertical{}; break;
+    case O::RollToVertical: emit(RollToVertical{}); break;
     case O::SetHeading:
       // The up vector given is cpfg's U, -frame.up.
-      if (n >= 6) command = SetHeadUp{vec_param(p, 0), -vec_param(p, 3)};
-      else if (n >= 3) command = SetHeading{vec_param(p, 0)};
-      else command = Note{" ignored: needs a heading", true};
+      if (n >= 6) emit(SetHeadUp{vec_param(p, 0), -vec_param(p, 3)});
+      else if (n >= 3) emit(SetHeading{vec_param(p, 0)});
+      else emit(Note{" ignored: needs a heading", true});
       break;
 
     case O::WidthUp:
     case O::WidthDown:
-      if (n > 0) command = SetWidth{std::max(0.0f, param(p, 0))};
-      else command = StepWidth{op == O::WidthUp ? settings_.width_increment : -settings_.width_increment};
+      if (n > 0) emit(SetWidth{std::max(0.0f, param(p, 0))});
+      else emit(StepWidth{op == O::WidthUp ? settings_.width_increment : -settings_.width_increment});
       break;
     case O::ColorUp:
     case O::ColorDown: {
       const bool up = op == O::ColorUp;
-      if (n > 0) command = SetColor{cpfg_color(int_param(p, 0), up)};
-      else command = StepColor{up ? settings_.color_increment : -settings_.color_increment,
-                               up ? ColorWrap::CpfgUp : ColorWrap::CpfgDown};
+      if (n > 0) emit(SetColor{cpfg_color(int_param(p, 0), up)});
+      else emit(StepColor{up ? settings_.color_increment : -settings_.color_increment,
+                               up ? ColorWrap::CpfgUp : ColorWrap::CpfgDown});
       break;
     }
 
@@ -145,83 +147,83 @@ bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t sour
     case O::PolygonOrCylinderStart:
       if (n > 0) {
         const int type = int_param(p, 0);
-        if (type >= 1 && type <= 4) command = StartCylinder{type};
-        else command = StartCylinder{1, true};
+        if (type >= 1 && type <= 4) emit(StartCylinder{type});
+        else emit(StartCylinder{1, true});
       } else {
-        command = StartPolygon{};
+        emit(StartPolygon{});
       }
       break;
     case O::PolygonOrCylinderEnd:
-      if (n > 0) command = EndCylinder{4, std::max(1, int_param(p, 0))};
-      else command = end_polygon();
+      if (n > 0) emit(EndCylinder{4, std::max(1, int_param(p, 0))});
+      else emit(end_polygon());
       break;
     case O::VertexOrCylinderPoint:
-      if (n > 0) command = CylinderDot{strips()};
-      else command = PolygonVertex{};
+      if (n > 0) emit(CylinderDot{strips()});
+      else emit(PolygonVertex{});
       break;
 
-    case O::CircleScreen: command = Circle{radius(), false, true}; break;
-    case O::CircleHL: command = Circle{radius(), false, false}; break;
-    case O::CircleScreenBoundary: command = Circle{radius(), true, true}; break;
-    case O::CircleHLBoundary: command = Circle{radius(), true, false}; break;
-    case O::Sphere: command = Sphere{radius()}; break;
+    case O::CircleScreen: emit(Circle{radius(), false, true}); break;
+    case O::CircleHL: emit(Circle{radius(), false, false}); break;
+    case O::CircleScreenBoundary: emit(Circle{radius(), true, true}); break;
+    case O::CircleHLBoundary: emit(Circle{radius(), true, false}); break;
+    case O::Sphere: emit(Sphere{radius()}); break;
 
-    case O::CylinderStart: command = StartCylinder{}; break;
+    case O::CylinderStart: emit(StartCylinder{}); break;
     // @Gc(strips), @Ge(strips): the bands since the previous control point.
-    case O::CylinderPoint: command = CylinderPoint{strips()}; break;
-    case O::CylinderEnd: command = EndCylinder{strips()}; break;
+    case O::CylinderPoint: emit(CylinderPoint{strips()}); break;
+    case O::CylinderEnd: emit(EndCylinder{strips()}); break;
     // @Gt(start,end): the Hermite tangent coefficients of the stretches
     // ended by the next control points; one parameter sets both.
     case O::CylinderTangents:
       if (n == 0) ignored(" ignored: needs tangent coefficients");
-      else command = CylinderTangents{param(p, 0), n > 1 ? param(p, 1) : param(p, 0)};
+      else emit(CylinderTangents{param(p, 0), n > 1 ? param(p, 1) : param(p, 0)});
       break;
     // @Gr(angle1,length1,angle2,length2): the radius's Hermite tangents
     // for the stretches ended by the next control points; @Gr(flag): the
     // adjustment to the stretch's length on or off.
     case O::CylinderRadiusTangents:
-      if (n >= 4) command = RadiusTangents{param(p, 0), param(p, 1), param(p, 2), param(p, 3)};
-      else if (n >= 1) command = RadiusAdjust{param(p, 0) != 0};
+      if (n >= 4) emit(RadiusTangents{param(p, 0), param(p, 1), param(p, 2), param(p, 3)});
+      else if (n >= 1) emit(RadiusAdjust{param(p, 0) != 0});
       else ignored(" ignored: needs tangents or a flag");
       break;
     case O::Contour: {
       const int c = n > 0 ? int_param(p, 0) : 0;
-      command = SetContour{c, c, 0, "@#"};
+      emit(SetContour{c, c, 0, "@#"});
       break;
     }
     case O::ContourSides:
       if (n == 0) ignored(" ignored: needs a number of sides");
-      else command = ContourSides{std::max(3, int_param(p, 0))};
+      else emit(ContourSides{std::max(3, int_param(p, 0))});
       break;
 
     case O::SetScale:
-      if (n > 0) command = SetScale{param(p, 0)};
+      if (n > 0) emit(SetScale{param(p, 0)});
       else ignored(" ignored: needs a scale");
       break;
     case O::ScaleUp:
-      if (n > 0) command = SetScale{param(p, 0)};
-      else command = MultiplyScale{settings_.scale_multiplier};
+      if (n > 0) emit(SetScale{param(p, 0)});
+      else emit(MultiplyScale{settings_.scale_multiplier});
       break;
     case O::ScaleDown:
-      if (n > 0) command = SetScale{param(p, 0)};
-      else if (settings_.scale_multiplier != 0) command = DivideScale{settings_.scale_multiplier};
-      else command = Note{};
+      if (n > 0) emit(SetScale{param(p, 0)});
+      else if (settings_.scale_multiplier != 0) emit(DivideScale{settings_.scale_multiplier});
+      else emit(Note{});
       break;
 
     // cpfg's textures count from 1 (0: none); the view file's from 0.
-    case O::Texture: command = SetTexture{n > 0 && int_param(p, 0) > 0 ? int_param(p, 0) - 1 : -1}; break;
+    case O::Texture: emit(SetTexture{n > 0 && int_param(p, 0) > 0 ? int_param(p, 0) - 1 : -1}); break;
 
     // @PS(id,type), @PC(id,r,c), @PD(id,s,t): the one L-system surface; the
     // id, the spline type and the mesh size are not kept.
-    case O::SurfaceInit: command = StartLsystemSurface{}; break;
+    case O::SurfaceInit: emit(StartLsystemSurface{}); break;
     case O::SurfacePoint:
-      if (n >= 3) command = LsystemSurfacePoint{int_param(p, 1), int_param(p, 2)};
+      if (n >= 3) emit(LsystemSurfacePoint{int_param(p, 1), int_param(p, 2)});
       else ignored(" ignored: needs id, row and column");
       break;
-    case O::SurfaceDraw: command = DrawLsystemSurface{}; break;
+    case O::SurfaceDraw: emit(DrawLsystemSurface{}); break;
 
     case O::ElasticitySet:
-      if (n >= 2) command = SetElasticity{int_param(p, 0), param(p, 1), false};
+      if (n >= 2) emit(SetElasticity{int_param(p, 0), param(p, 1), false});
       else ignored(" ignored: needs a tropism id and a value");
       break;
     case O::ElasticityUp:
@@ -234,20 +236,20 @@ bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t sour
       const int t = int_param(p, 0);
       const bool known = t >= 1 && static_cast<std::size_t>(t) <= settings_.tropisms.size();
       const float v = n >= 2 ? param(p, 1) : known ? settings_.tropisms[static_cast<std::size_t>(t) - 1].step : 0.0f;
-      command = SetElasticity{t, op == O::ElasticityUp ? v : -v, true};
+      emit(SetElasticity{t, op == O::ElasticityUp ? v : -v, true});
       break;
     }
 
-    case O::QueryPosition: command = Query{Quantity::Position, n}; break;
-    case O::QueryHeading: command = Query{Quantity::Heading, n}; break;
-    case O::QueryLeft: command = Query{Quantity::Left, n}; break;
-    case O::QueryUp: command = Query{Quantity::CpfgUp, n}; break;
+    case O::QueryPosition: emit(Query{Quantity::Position, n}); break;
+    case O::QueryHeading: emit(Query{Quantity::Heading, n}); break;
+    case O::QueryLeft: emit(Query{Quantity::Left, n}); break;
+    case O::QueryUp: emit(Query{Quantity::CpfgUp, n}); break;
 
     // ?(label,s): the sub-L-system's structure is scaled by s (CPFG manual
     // 7.2) until its $.
     case O::SubLsystemCall:
       if (n != 2) ignored(" ignored: needs a label and a scale");
-      else command = CallSubLsystem{param(p, 1)};
+      else emit(CallSubLsystem{param(p, 1)});
       break;
 
     // ~id, ~id(s), ~id(sx,sy,sz): the view file's surface `surface: id file.s scale`.
@@ -262,7 +264,7 @@ bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t sour
       Vec3 scale{1, 1, 1};
       if (n >= 3) scale = vec_param(p, 0);
       else if (n >= 1) scale = Vec3{param(p, 0), param(p, 0), param(p, 0)};
-      command = Surface{static_cast<int>(found - ids.begin()), scale, name.c_str(), true};
+      emit(Surface{static_cast<int>(found - ids.begin()), scale, name.c_str(), true});
       break;
     }
 
@@ -273,25 +275,28 @@ bool CpfgDecoder::decode(ModuleId id, const unsigned char* p, std::uint32_t sour
       label_values_.resize(static_cast<std::size_t>(n));
       for (int k = 0; k < n; ++k) label_values_[static_cast<std::size_t>(k)] = param(values, k);
       label_ = format_cpfg_label(label_text(p), label_values_.data(), n);
-      command = Label{label_, true};
+      emit(Label{label_, true});
       break;
     }
 
-    case O::MinimizeTwist: command = MinimizeTwist{}; break;
-    case O::ForceTwist: command = ForceTwist{}; break;
+    case O::MinimizeTwist: emit(MinimizeTwist{}); break;
+    case O::ForceTwist: emit(ForceTwist{}); break;
 
     // @;(n) @,(n): the back side's colour index, stepped from the front's
     // until set. Outputs draw one side: the Scene keeps the front's colour.
     case O::BackColorUp:
     case O::BackColorDown: {
       const bool up = op == O::BackColorUp;
-      if (n > 0) command = SetColor{cpfg_color(int_param(p, 0), up), true};
-      else command = StepColor{up ? settings_.back_color_increment : -settings_.back_color_increment,
-                               up ? ColorWrap::CpfgUp : ColorWrap::CpfgDown, true};
+      if (n > 0) emit(SetColor{cpfg_color(int_param(p, 0), up), true});
+      else emit(StepColor{up ? settings_.back_color_increment : -settings_.back_color_increment,
+                               up ? ColorWrap::CpfgUp : ColorWrap::CpfgDown, true});
       break;
     }
   }
   return true;
 }
+
+template bool CpfgDecoder::decode(ModuleId, const unsigned char*, std::uint32_t, CommandRunner&);
+template bool CpfgDecoder::decode(ModuleId, const unsigned char*, std::uint32_t, CommandRecorder&);
 
 }  // namespace sylva::turtle

@@ -30,14 +30,16 @@ class CpfgDecoder {
 
   // The turtle before the string's first module.
   static TurtleState initial_state(const TurtleSettings& settings);
-  // The command of module `id` (module `source_index` of the string, for
-  // errors); false when it makes none: not a turtle symbol, or a character
-  // of a longer command still being read.
-  bool decode(ModuleId id, const unsigned char* params, std::uint32_t source_index, TurtleCommand& command);
+  // Passes the command of module `id` (module `source_index` of the string,
+  // for errors) to `emit` (CommandRunner, CommandRecorder); false, and no
+  // command, when it makes none: not a turtle symbol, or a character of a
+  // longer command still being read.
+  template <class Emit>
+  bool decode(ModuleId id, const unsigned char* params, std::uint32_t source_index, Emit& emit);
   // The module as the trace writes it.
   void append_text(std::string& out, ModuleId id, const unsigned char* params) const;
   // What closes a polygon the string left open.
-  static TurtleCommand end_polygon() { return command::EndPolygon{true}; }
+  static command::EndPolygon end_polygon() { return {true}; }
 
  private:
   // The operation of module `id`, joined to the characters read before it.

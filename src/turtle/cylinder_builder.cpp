@@ -94,12 +94,6 @@ const Vec3* CylinderBuilder::contour_points(int id, int blend_id, float blend, i
   return blended_.data();
 }
 
-bool CylinderBuilder::open(const TurtleState& state) const {
-  if (state.cylinder < 0) return false;
-  const Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
-  return c.open && c.serial == state.cylinder_serial;
-}
-
 CylinderBuilder::ControlPoint CylinderBuilder::control_point(const TurtleState& state, geometry::Provenance from,
                                                              int strips) {
   ControlPoint p;
@@ -186,15 +180,6 @@ CylinderBuilder::Ended CylinderBuilder::end(TurtleState& state, geometry::Proven
   ended.closed = close(state.cylinder);
   state.cylinder = -1;
   return ended;
-}
-
-CylinderBuilder::Closed CylinderBuilder::end_branch(const TurtleState& state, TurtleState& saved) {
-  Closed closed;
-  // A cylinder started in the branch ends with it.
-  if (open(state) && (state.cylinder != saved.cylinder || state.cylinder_serial != saved.cylinder_serial))
-    closed = close(state.cylinder);
-  if (saved.cylinder >= 0 && !open(saved)) saved.cylinder = -1;
-  return closed;
 }
 
 CylinderBuilder::Closed CylinderBuilder::close(int slot) {

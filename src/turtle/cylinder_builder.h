@@ -29,7 +29,11 @@ class CylinderBuilder {
   void check_contour(int id, const char* module, geometry::Provenance from) const;
 
   // Whether `state`'s cylinder is still open.
-  bool open(const TurtleState& state) const;
+  bool open(const TurtleState& state) const {
+    if (state.cylinder < 0) return false;
+    const Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
+    return c.open && c.serial == state.cylinder_serial;
+  }
 
   // A cylinder that ended: its rings and sides (rings -1: none ended).
   struct Closed {
@@ -63,7 +67,13 @@ class CylinderBuilder {
   // The end of a branch: `state`'s cylinder ends unless `saved` (the state
   // the branch goes back to) adds to it too; `saved` forgets a cylinder
   // that has ended.
-  Closed end_branch(const TurtleState& state, TurtleState& saved);
+  Closed end_branch(const TurtleState& state, TurtleState& saved) {
+    Closed closed;
+    if (open(state) && (state.cylinder != saved.cylinder || state.cylinder_serial != saved.cylinder_serial))
+      closed = close(state.cylinder);
+    if (saved.cylinder >= 0 && !open(saved)) saved.cylinder = -1;
+    return closed;
+  }
   // The slots, for closing what the string left open.
   int slots() const { return static_cast<int>(cylinders_.size()); }
   bool slot_open(int slot) const { return cylinders_[static_cast<std::size_t>(slot)].open; }

@@ -25,19 +25,9 @@ CommandDispatcher::CommandDispatcher(const TurtleSettings& settings, const Turtl
       cylinders_(settings, scene),
       shapes_(settings, scene) {}
 
-CommandResult CommandDispatcher::execute(const TurtleCommand& command) {
-  return std::visit([this](const auto& c) { return run(c); }, command);
-}
-
-CommandResult CommandDispatcher::run(const Note&) { return {}; }
+void CommandDispatcher::run(const Note&) {}
 
 // ---- the stack ------------------------------------------------------------------
-
-CommandResult CommandDispatcher::run(const Push&) {
-  stack_.push_back(state_);
-  tropisms_.push();
-  return {};
-}
 
 CommandResult CommandDispatcher::run(const Pop&) {
   if (stack_.empty()) return noted(" ignored: no branch to end");
@@ -86,11 +76,10 @@ CommandResult CommandDispatcher::run(const Forward& c) {
     state_.step_up = state_.frame.up;
   }
   // Inside a generalized cylinder the cylinder is the drawing.
-  if (c.draw && distance != 0 && !cylinders_.open(state_)) add_segment(r.from, r.to);
-  if (c.records_vertex) {
-    if (polygons_.any_open()) r.polygon = polygons_.add_vertex(state_.position, state_.frame);
-    r.cylinder_point = cylinders_.step_point(state_, from_);
-  }
+  const bool in_cylinder = cylinders_.open(state_);
+  if (c.draw && distance != 0 && !in_cylinder) add_segment(r.from, r.to);
+  if (c.records_vertex && polygons_.any_open()) r.polygon = polygons_.add_vertex(state_.position, state_.frame);
+  if (c.records_vertex && in_cylinder) r.cylinder_point = cylinders_.step_point(state_, from_);
   if (c.draw && tropisms_.bending()) tropisms_.bend(state_.frame);
   return r;
 }
@@ -140,7 +129,7 @@ CommandResult CommandDispatcher::run(const Line& c) {
   return line(to_world(c.from, Coordinates::Local), to_world(c.to, Coordinates::Local));
 }
 
-CommandResult CommandDispatcher::run(const SetCoordinateSystem& c) {
+void CommandDispatcher::run(const SetCoordinateSystem& c) {
   // Local x, y, z along the turtle's right (-L), heading and up: at the
   // initial frame, the world's own axes.
   const Frame& f = state_.frame;
@@ -148,27 +137,11 @@ CommandResult CommandDispatcher::run(const SetCoordinateSystem& c) {
   state_.axis_x = f.left * -c.scale;
   state_.axis_y = f.heading * c.scale;
   state_.axis_z = f.up * c.scale;
-  return {};
 }
 
 // ---- rotations --------------------------------------------------------------------
 
-CommandResult CommandDispatcher::run(const Turn& c) {
-  float cosine, sine;
-  angles_.get(c.degrees, &cosine, &sine);
-  Frame& f = state_.frame;
-  switch (c.axis) {
-    case Axis::Up: f.rotate_up(cosine, sine); break;
-    case Axis::Left: f.rotate_left(cosine, sine); break;
-    case Axis::Heading: f.rotate_heading(cosine, sine); break;
-  }
-  return {};
-}
-
-CommandResult CommandDispatcher::run(const TurnAround&) {
-  state_.frame.rotate_up(-1, 0);
-  return {};
-}
+void CommandDispatcher::run(const TurnAround&) { state_.frame.rotate_up(-1, 0); }
 
 CommandResult CommandDispatcher::run(const RollToVertical&) {
   if (!state_.frame.roll_to_vertical(kVertical, kEpsilon)) return noted(" ignored: heading vertical");
@@ -212,30 +185,18 @@ CommandResult CommandDispatcher::run(const MinimizeTwist&) {
   return {};
 }
 
-CommandResult CommandDispatcher::run(const ForceTwist&) {
+void CommandDispatcher::run(const ForceTwist&) {
   state_.step_heading = state_.frame.heading;
   state_.step_up = state_.frame.up;
-  return {};
 }
 
 // ---- widths, colours and the scale ----------------------------------------------------
 
-CommandResult CommandDispatcher::run(const SetWidth& c) {
-  state_.width = c.width;
-  return {};
-}
-
-CommandResult CommandDispatcher::run(const StepWidth& c) {
+void CommandDispatcher::run(const StepWidth& c) {
   state_.width = std::max(0.0f, state_.width + c.by);
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const SetColor& c) {
-  (c.back_side ? state_.back_color : state_.color) = c.index;
-  return {};
-}
-
-CommandResult CommandDispatcher::run(const StepColor& c) {
+void CommandDispatcher::run(const StepColor& c) {
   int& color = c.back_side ? state_.back_color : state_.color;
   if (c.wrap == ColorWrap::Lpfg) {
     color = c.by > 0 ? (color >= 255 ? 1 : color + 1) : (color <= 1 ? 255 : color - 1);
@@ -244,36 +205,30 @@ CommandResult CommandDispatcher::run(const StepColor& c) {
     const int current = c.back_side && state_.back_color < 0 ? state_.color : color;
     color = cpfg_color(current + c.by, c.wrap == ColorWrap::CpfgUp);
   }
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const SetScale& c) {
+void CommandDispatcher::run(const SetScale& c) {
   state_.scale = c.scale;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const MultiplyScale& c) {
+void CommandDispatcher::run(const MultiplyScale& c) {
   state_.scale = state_.scale * c.by;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const DivideScale& c) {
+void CommandDispatcher::run(const DivideScale& c) {
   state_.scale = state_.scale / c.by;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const CallSubLsystem& c) {
+void CommandDispatcher::run(const CallSubLsystem& c) {
   sub_lsystem_scales_.push_back(state_.scale);
   state_.scale *= c.scale;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const ReturnFromSubLsystem&) {
+void CommandDispatcher::run(const ReturnFromSubLsystem&) {
   if (!sub_lsystem_scales_.empty()) {
     state_.scale = sub_lsystem_scales_.back();
     sub_lsystem_scales_.pop_back();
   }
-  return {};
 }
 
 // ---- tropisms ---------------------------------------------------------------------------
@@ -286,30 +241,31 @@ CommandResult CommandDispatcher::run(const SetElasticity& c) {
   return r;
 }
 
-CommandResult CommandDispatcher::run(const SimpleElasticity& c) {
+void CommandDispatcher::run(const SimpleElasticity& c) {
   tropisms_.set_simple(c.value);
-  return {};
 }
 
 // ---- query modules -------------------------------------------------------------------
 
-CommandResult CommandDispatcher::run(const Query& c) {
-  const Frame& f = state_.frame;
-  CommandResult r;
-  switch (c.quantity) {
-    case Quantity::Position: r.answer = state_.position; break;
-    case Quantity::Heading: r.answer = f.heading; break;
-    case Quantity::Left: r.answer = f.left; break;
-    case Quantity::Up: r.answer = f.up; break;
-    case Quantity::CpfgUp: r.answer = -f.up; break;
+Vec3 CommandDispatcher::quantity(const TurtleState& turtle, Quantity quantity) {
+  switch (quantity) {
+    case Quantity::Position: return turtle.position;
+    case Quantity::Heading: return turtle.frame.heading;
+    case Quantity::Left: return turtle.frame.left;
+    case Quantity::Up: return turtle.frame.up;
+    case Quantity::CpfgUp: return -turtle.frame.up;
   }
+  return {};
+}
+
+void CommandDispatcher::run(const Query& c) {
+  const Vec3 answer = quantity(state_, c.quantity);
   // cpfg's ?P(x,y) receives x and y, ?P(x,y,z) all three.
   const int n = std::min(c.count, 3);
   if (in_string_ && n > 0) {
-    const float xyz[3] = {r.answer.x, r.answer.y, r.answer.z};
+    const float xyz[3] = {answer.x, answer.y, answer.z};
     query_answers_.set_floats(from_.module_index, 0, xyz, n);
   }
-  return r;
 }
 
 }  // namespace sylva::turtle

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "derive/parameter_writes.h"
@@ -32,54 +33,71 @@ class CommandDispatcher {
     from_ = from;
     in_string_ = in_string;
   }
-  CommandResult execute(const TurtleCommand& command);
-
   const TurtleState& state() const { return state_; }
   std::size_t depth() const { return stack_.size(); }
   bool in_string() const { return in_string_; }
   bool polygon_open() const { return polygons_.any_open(); }
   const CylinderBuilder& cylinders() const { return cylinders_; }
   const derive::ParameterWrites& query_answers() const { return query_answers_; }
+  // What a query module asking for `quantity` is told.
+  static Vec3 quantity(const TurtleState& turtle, command::Quantity quantity);
+  // The radius of a circle or sphere of `radius` (none: half the width).
+  static float radius(const TurtleState& turtle, const std::optional<float>& radius);
 
- private:
-  CommandResult run(const command::Note& c);
-  CommandResult run(const command::Push&);
+  // Execute a command (command.h says what each does); those that may be
+  // ignored, or have more to tell than the turtle shows, say what they did.
+  // The few that every plant repeats millions of times are defined here, so
+  // that the decoders' switches run them without a call.
+  void run(const command::Note& c);
+  void run(const command::Push&) {
+    stack_.push_back(state_);
+    tropisms_.push();
+  }
   CommandResult run(const command::Pop&);
   CommandResult run(const command::Forward& c);
   CommandResult run(const command::MoveTo& c);
   CommandResult run(const command::LineTo& c);
   CommandResult run(const command::Line& c);
-  CommandResult run(const command::SetCoordinateSystem& c);
-  CommandResult run(const command::Turn& c);
-  CommandResult run(const command::TurnAround&);
+  void run(const command::SetCoordinateSystem& c);
+  void run(const command::Turn& c) {
+    float cosine, sine;
+    angles_.get(c.degrees, &cosine, &sine);
+    Frame& f = state_.frame;
+    switch (c.axis) {
+      case command::Axis::Up: f.rotate_up(cosine, sine); break;
+      case command::Axis::Left: f.rotate_left(cosine, sine); break;
+      case command::Axis::Heading: f.rotate_heading(cosine, sine); break;
+    }
+  }
+  void run(const command::TurnAround&);
   CommandResult run(const command::RollToVertical&);
   CommandResult run(const command::Rotate& c);
   CommandResult run(const command::SetHeadUp& c);
   CommandResult run(const command::SetHeading& c);
   CommandResult run(const command::MinimizeTwist&);
-  CommandResult run(const command::ForceTwist&);
-  CommandResult run(const command::SetWidth& c);
-  CommandResult run(const command::StepWidth& c);
-  CommandResult run(const command::SetColor& c);
-  CommandResult run(const command::StepColor& c);
-  CommandResult run(const command::SetScale& c);
-  CommandResult run(const command::MultiplyScale& c);
-  CommandResult run(const command::DivideScale& c);
-  CommandResult run(const command::CallSubLsystem& c);
-  CommandResult run(const command::ReturnFromSubLsystem&);
-  CommandResult run(const command::Circle& c);
-  CommandResult run(const command::Sphere& c);
+  void run(const command::ForceTwist&);
+  void run(const command::SetWidth& c) { state_.width = c.width; }
+  void run(const command::StepWidth& c);
+  void run(const command::SetColor& c) { (c.back_side ? state_.back_color : state_.color) = c.index; }
+  void run(const command::StepColor& c);
+  void run(const command::SetScale& c);
+  void run(const command::MultiplyScale& c);
+  void run(const command::DivideScale& c);
+  void run(const command::CallSubLsystem& c);
+  void run(const command::ReturnFromSubLsystem&);
+  void run(const command::Circle& c);
+  void run(const command::Sphere& c);
   CommandResult run(const command::Rhombus& c);
   CommandResult run(const command::Triangle& c);
   CommandResult run(const command::Surface& c);
   CommandResult run(const command::Mesh& c);
-  CommandResult run(const command::SurfacePrecision& c);
-  CommandResult run(const command::StartLsystemSurface&);
-  CommandResult run(const command::LsystemSurfacePoint& c);
+  void run(const command::SurfacePrecision& c);
+  void run(const command::StartLsystemSurface&);
+  void run(const command::LsystemSurfacePoint& c);
   CommandResult run(const command::DrawLsystemSurface&);
   CommandResult run(const command::BezierPatch& c);
-  CommandResult run(const command::Label& c);
-  CommandResult run(const command::Camera&);
+  void run(const command::Label& c);
+  void run(const command::Camera&);
   CommandResult run(const command::StartPolygon&);
   CommandResult run(const command::PolygonVertex&);
   CommandResult run(const command::EndPolygon& c);
@@ -88,18 +106,19 @@ class CommandDispatcher {
   CommandResult run(const command::CylinderDot& c);
   CommandResult run(const command::EndCylinder& c);
   CommandResult run(const command::CloseCylinder& c);
-  CommandResult run(const command::SetContour& c);
-  CommandResult run(const command::ScaleContour& c);
+  void run(const command::SetContour& c);
+  void run(const command::ScaleContour& c);
   CommandResult run(const command::ContourSides& c);
-  CommandResult run(const command::CylinderTangents& c);
-  CommandResult run(const command::RadiusTangents& c);
-  CommandResult run(const command::RadiusAdjust& c);
-  CommandResult run(const command::SetTexture& c);
-  CommandResult run(const command::TextureVCoeff& c);
+  void run(const command::CylinderTangents& c);
+  void run(const command::RadiusTangents& c);
+  void run(const command::RadiusAdjust& c);
+  void run(const command::SetTexture& c);
+  void run(const command::TextureVCoeff& c);
   CommandResult run(const command::SetElasticity& c);
-  CommandResult run(const command::SimpleElasticity& c);
-  CommandResult run(const command::Query& c);
+  void run(const command::SimpleElasticity& c);
+  void run(const command::Query& c);
 
+ private:
   // A drawn line with the turtle's width, colour and up vector.
   void add_segment(Vec3 from, Vec3 to);
   // Point `p` in the coordinates `coordinates` (command::Coordinates), in the world.

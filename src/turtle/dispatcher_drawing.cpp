@@ -32,19 +32,15 @@ constexpr const char* kNoCylinder = " ignored: no generalized cylinder";
 
 // ---- shapes -----------------------------------------------------------------------
 
-CommandResult CommandDispatcher::run(const Circle& c) {
-  CommandResult r;
-  r.value = (c.radius ? *c.radius : state_.width / 2) * state_.scale;
-  shapes_.circle(state_, from_, r.value, c.outlined ? state_.width : 0, c.facing_viewer);
-  return r;
+float CommandDispatcher::radius(const TurtleState& turtle, const std::optional<float>& radius) {
+  return (radius ? *radius : turtle.width / 2) * turtle.scale;
 }
 
-CommandResult CommandDispatcher::run(const Sphere& c) {
-  CommandResult r;
-  r.value = (c.radius ? *c.radius : state_.width / 2) * state_.scale;
-  shapes_.sphere(state_, from_, r.value);
-  return r;
+void CommandDispatcher::run(const Circle& c) {
+  shapes_.circle(state_, from_, radius(state_, c.radius), c.outlined ? state_.width : 0, c.facing_viewer);
 }
+
+void CommandDispatcher::run(const Sphere& c) { shapes_.sphere(state_, from_, radius(state_, c.radius)); }
 
 CommandResult CommandDispatcher::run(const Rhombus& c) {
   const Frame& f = state_.frame;
@@ -72,19 +68,16 @@ CommandResult CommandDispatcher::run(const Mesh& c) {
   return r;
 }
 
-CommandResult CommandDispatcher::run(const SurfacePrecision& c) {
+void CommandDispatcher::run(const SurfacePrecision& c) {
   (c.along_v ? state_.v_precision : state_.u_precision) = c.divisions;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const StartLsystemSurface&) {
+void CommandDispatcher::run(const StartLsystemSurface&) {
   shapes_.start_lsystem_surface();
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const LsystemSurfacePoint& c) {
+void CommandDispatcher::run(const LsystemSurfacePoint& c) {
   shapes_.lsystem_surface_point(state_, from_, c.row, c.column);
-  return {};
 }
 
 CommandResult CommandDispatcher::run(const DrawLsystemSurface&) {
@@ -93,14 +86,12 @@ CommandResult CommandDispatcher::run(const DrawLsystemSurface&) {
 
 CommandResult CommandDispatcher::run(const BezierPatch& c) { return drew(shapes_.bezier_patch(state_, from_, c.points)); }
 
-CommandResult CommandDispatcher::run(const Label& c) {
+void CommandDispatcher::run(const Label& c) {
   shapes_.label(state_, from_, std::string(c.text));
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const Camera&) {
+void CommandDispatcher::run(const Camera&) {
   if (scene_) scene_->camera = geometry::CameraPose{state_.position, state_.frame.heading, state_.frame.up, from_};
-  return {};
 }
 
 // ---- polygons ---------------------------------------------------------------------
@@ -164,19 +155,17 @@ CommandResult CommandDispatcher::run(const EndCylinder& c) {
 
 CommandResult CommandDispatcher::run(const CloseCylinder& c) { return closed(cylinders_.close(c.slot)); }
 
-CommandResult CommandDispatcher::run(const SetContour& c) {
+void CommandDispatcher::run(const SetContour& c) {
   cylinders_.check_contour(c.contour, c.module, from_);
   cylinders_.check_contour(c.blend_contour, c.module, from_);
   state_.contour = c.contour;
   state_.blend_contour = c.blend_contour;
   state_.blend = c.blend;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const ScaleContour& c) {
+void CommandDispatcher::run(const ScaleContour& c) {
   state_.contour_scale_left = c.left;
   state_.contour_scale_up = c.up;
-  return {};
 }
 
 CommandResult CommandDispatcher::run(const ContourSides& c) {
@@ -185,37 +174,32 @@ CommandResult CommandDispatcher::run(const ContourSides& c) {
   return {};
 }
 
-CommandResult CommandDispatcher::run(const CylinderTangents& c) {
+void CommandDispatcher::run(const CylinderTangents& c) {
   state_.cylinder_tangent_start = c.start;
   state_.cylinder_tangent_end = c.end;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const RadiusTangents& c) {
+void CommandDispatcher::run(const RadiusTangents& c) {
   geometry::RadiusTangents& t = state_.radius_tangents;
   t.given = true;
   t.angle1 = c.angle1;
   t.length1 = c.length1;
   t.angle2 = c.angle2;
   t.length2 = c.length2;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const RadiusAdjust& c) {
+void CommandDispatcher::run(const RadiusAdjust& c) {
   state_.radius_tangents.adjust = c.adjust;
-  return {};
 }
 
 // ---- textures ---------------------------------------------------------------------
 
-CommandResult CommandDispatcher::run(const SetTexture& c) {
+void CommandDispatcher::run(const SetTexture& c) {
   state_.texture = c.texture;
-  return {};
 }
 
-CommandResult CommandDispatcher::run(const TextureVCoeff& c) {
+void CommandDispatcher::run(const TextureVCoeff& c) {
   state_.texture_v = c.v;
-  return {};
 }
 
 }  // namespace sylva::turtle

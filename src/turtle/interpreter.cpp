@@ -1,11 +1,12 @@
 // The interpreter: each module the derivation shows it is decoded into a
 // turtle command (by the model's language: lpfg_decoder.h, cpfg_decoder.h),
-// the dispatcher executes it, and the trace, when asked for, writes the
-// module and what the command did.
+// which the dispatcher executes at once; the trace, when asked for, writes
+// the module and what the command did.
 #include "turtle/interpreter.h"
 
 #include <optional>
 
+#include "turtle/command_runner.h"
 #include "turtle/cpfg_decoder.h"
 #include "turtle/dispatcher.h"
 #include "turtle/lpfg_decoder.h"
@@ -18,42 +19,45 @@ struct TurtleInterpreter::Impl {
       : cpfg(types.cpfg() ? std::optional<CpfgDecoder>(std::in_place, settings, types) : std::nullopt),
         lpfg(settings),
         turtle(settings, cpfg ? CpfgDecoder::initial_state(settings) : LpfgDecoder::initial_state(settings), scene),
+        runner(turtle, trace != nullptr),
         trace(trace) {}
 
   void visit(ModuleId id, const unsigned char* params, std::uint32_t source_index, bool in_string) {
-    TurtleCommand command;
-    if (cpfg ? !cpfg->decode(id, params, source_index, command) : !lpfg.decode(id, params, command)) return;
     turtle.at_module(geometry::Provenance{source_index, id}, in_string);
-    if (trace) {
-      if (cpfg) cpfg->append_text(*trace, id, params);
-      else LpfgDecoder::append_text(*trace, id, params);
-    }
-    run(command);
+    if (cpfg ? !cpfg->decode(id, params, source_index, runner) : !lpfg.decode(id, params, runner)) return;
+    if (!trace) return;
+    if (cpfg) cpfg->append_text(*trace, id, params);
+    else LpfgDecoder::append_text(*trace, id, params);
+    trace_last();
   }
 
   // Closes what the string left open.
   void finish() {
     while (turtle.polygon_open()) {
       if (trace) *trace += "end of string: EP";
-      run(cpfg ? CpfgDecoder::end_polygon() : LpfgDecoder::end_polygon());
+      if (cpfg) runner(CpfgDecoder::end_polygon());
+      else runner(LpfgDecoder::end_polygon());
+      trace_last();
     }
     for (int slot = 0; slot < turtle.cylinders().slots(); ++slot) {
       if (!turtle.cylinders().slot_open(slot)) continue;
       if (trace) *trace += "end of string: EndGC";
-      run(command::CloseCylinder{slot});
+      runner(command::CloseCylinder{slot});
+      trace_last();
     }
   }
 
-  void run(const TurtleCommand& command) {
-    const CommandResult result = turtle.execute(command);
+  // The rest of the trace's line: what the last command did.
+  void trace_last() {
     if (!trace) return;
-    append_command(*trace, command, result, turtle);
+    append_command(*trace, runner.last(), runner.result(), turtle);
     trace->push_back('\n');
   }
 
   std::optional<CpfgDecoder> cpfg;  // a cpfg model's; none for L+C
   LpfgDecoder lpfg;
   CommandDispatcher turtle;
+  CommandRunner runner;
   std::string* trace;
 };
 

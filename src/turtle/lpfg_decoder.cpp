@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "sylva/predefined_ids.h"
+#include "turtle/command_runner.h"
 #include "turtle/trace.h"
 
 namespace sylva::turtle {
@@ -45,7 +46,8 @@ void LpfgDecoder::append_text(std::string& out, ModuleId id, const unsigned char
   append_module(out, id, params);
 }
 
-bool LpfgDecoder::decode(ModuleId id, const unsigned char* p, TurtleCommand& command) const {
+template <class Emit>
+bool LpfgDecoder::decode(ModuleId id, const unsigned char* p, Emit& emit) const {
   namespace m = rt::mid;
   using namespace command;
   using C = Coordinates;
@@ -53,37 +55,37 @@ bool LpfgDecoder::decode(ModuleId id, const unsigned char* p, TurtleCommand& com
   // lpfg's "corrected rotation": Up turns H toward U, Down toward -U, RollL
   // turns U toward L, RollR toward -L. lpfg's old rotations went the other way.
   const float corrected = settings_.corrected_rotation ? -1.0f : 1.0f;
-  auto turn = [&](Axis axis, float degrees) { command = Turn{axis, degrees}; };
+  auto turn = [&](Axis axis, float degrees) { emit(Turn{axis, degrees}); };
   switch (id) {
-    case m::SB: command = Push{}; break;
-    case m::EB: command = Pop{}; break;
-    case m::Cut: command = Note{" (the derivation's; nothing to draw)"}; break;
+    case m::SB: emit(Push{}); break;
+    case m::EB: emit(Pop{}); break;
+    case m::Cut: emit(Note{" (the derivation's; nothing to draw)"}); break;
 
-    case m::F: command = Forward{f32(p), true, true}; break;
-    case m::f: command = Forward{f32(p), false, true}; break;
-    case m::G: command = Forward{f32(p), true, false}; break;
-    case m::g: command = Forward{f32(p), false, false}; break;
-    case m::MoveTo: case m::MoveTo3f: command = MoveTo{v3f(p), C::Local}; break;
-    case m::MoveTo3d: command = MoveTo{v3d(p), C::Local}; break;
-    case m::MoveTo2f: command = MoveTo{v2f(p), C::Local}; break;
-    case m::MoveTo2d: command = MoveTo{v2d(p), C::Local}; break;
-    case m::MoveRel3f: command = MoveTo{v3f(p), C::LocalOffset}; break;
-    case m::MoveRel3d: command = MoveTo{v3d(p), C::LocalOffset}; break;
-    case m::MoveRel2f: command = MoveTo{v2f(p), C::LocalOffset}; break;
-    case m::MoveRel2d: command = MoveTo{v2d(p), C::LocalOffset}; break;
-    case m::LineTo: case m::LineTo3f: command = LineTo{v3f(p), C::Local}; break;
-    case m::LineTo3d: command = LineTo{v3d(p), C::Local}; break;
-    case m::LineTo2f: command = LineTo{v2f(p), C::Local}; break;
-    case m::LineTo2d: command = LineTo{v2d(p), C::Local}; break;
-    case m::LineRel3f: command = LineTo{v3f(p), C::LocalOffset}; break;
-    case m::LineRel3d: command = LineTo{v3d(p), C::LocalOffset}; break;
-    case m::LineRel2f: command = LineTo{v2f(p), C::LocalOffset}; break;
-    case m::LineRel2d: command = LineTo{v2d(p), C::LocalOffset}; break;
-    case m::Line3f: command = Line{v3f(p), v3f(p, 12)}; break;
-    case m::Line3d: command = Line{v3d(p), v3d(p, 24)}; break;
-    case m::Line2f: command = Line{v2f(p), v2f(p, 8)}; break;
-    case m::Line2d: command = Line{v2d(p), v2d(p, 16)}; break;
-    case m::SetCoordinateSystem: command = SetCoordinateSystem{f32(p)}; break;
+    case m::F: emit(Forward{f32(p), true, true}); break;
+    case m::f: emit(Forward{f32(p), false, true}); break;
+    case m::G: emit(Forward{f32(p), true, false}); break;
+    case m::g: emit(Forward{f32(p), false, false}); break;
+    case m::MoveTo: case m::MoveTo3f: emit(MoveTo{v3f(p), C::Local}); break;
+    case m::MoveTo3d: emit(MoveTo{v3d(p), C::Local}); break;
+    case m::MoveTo2f: emit(MoveTo{v2f(p), C::Local}); break;
+    case m::MoveTo2d: emit(MoveTo{v2d(p), C::Local}); break;
+    case m::MoveRel3f: emit(MoveTo{v3f(p), C::LocalOffset}); break;
+    case m::MoveRel3d: emit(MoveTo{v3d(p), C::LocalOffset}); break;
+    case m::MoveRel2f: emit(MoveTo{v2f(p), C::LocalOffset}); break;
+    case m::MoveRel2d: emit(MoveTo{v2d(p), C::LocalOffset}); break;
+    case m::LineTo: case m::LineTo3f: emit(LineTo{v3f(p), C::Local}); break;
+    case m::LineTo3d: emit(LineTo{v3d(p), C::Local}); break;
+    case m::LineTo2f: emit(LineTo{v2f(p), C::Local}); break;
+    case m::LineTo2d: emit(LineTo{v2d(p), C::Local}); break;
+    case m::LineRel3f: emit(LineTo{v3f(p), C::LocalOffset}); break;
+    case m::LineRel3d: emit(LineTo{v3d(p), C::LocalOffset}); break;
+    case m::LineRel2f: emit(LineTo{v2f(p), C::LocalOffset}); break;
+    case m::LineRel2d: emit(LineTo{v2d(p), C::LocalOffset}); break;
+    case m::Line3f: emit(Line{v3f(p), v3f(p, 12)}); break;
+    case m::Line3d: emit(Line{v3d(p), v3d(p, 24)}); break;
+    case m::Line2f: emit(Line{v2f(p), v2f(p, 8)}); break;
+    case m::Line2d: emit(Line{v2d(p), v2d(p, 16)}); break;
+    case m::SetCoordinateSystem: emit(SetCoordinateSystem{f32(p)}); break;
 
     case m::Left: turn(Axis::Up, f32(p)); break;
     case m::Right: turn(Axis::Up, -f32(p)); break;
@@ -91,103 +93,106 @@ bool LpfgDecoder::decode(ModuleId id, const unsigned char* p, TurtleCommand& com
     case m::Down: turn(Axis::Left, -corrected * f32(p)); break;
     case m::RollL: turn(Axis::Heading, corrected * f32(p)); break;
     case m::RollR: turn(Axis::Heading, -corrected * f32(p)); break;
-    case m::TurnAround: command = TurnAround{}; break;
-    case m::RollToVert: command = RollToVertical{}; break;
-    case m::RotateXYZ: command = Rotate{v3f(p), f32(p, 12), false}; break;
-    case m::RotateHLU: command = Rotate{v3f(p), f32(p, 12), true}; break;
-    case m::SetHead: command = SetHeadUp{v3f(p), v3f(p, 12)}; break;
-    case m::SetHead3f: command = SetHeading{v3f(p)}; break;
+    case m::TurnAround: emit(TurnAround{}); break;
+    case m::RollToVert: emit(RollToVertical{}); break;
+    case m::RotateXYZ: emit(Rotate{v3f(p), f32(p, 12), false}); break;
+    case m::RotateHLU: emit(Rotate{v3f(p), f32(p, 12), true}); break;
+    case m::SetHead: emit(SetHeadUp{v3f(p), v3f(p, 12)}); break;
+    case m::SetHead3f: emit(SetHeading{v3f(p)}); break;
 
-    case m::IncColor: command = StepColor{1, ColorWrap::Lpfg}; break;
-    case m::DecColor: command = StepColor{-1, ColorWrap::Lpfg}; break;
+    case m::IncColor: emit(StepColor{1, ColorWrap::Lpfg}); break;
+    case m::DecColor: emit(StepColor{-1, ColorWrap::Lpfg}); break;
     case m::SetColor: {
       const int n = i32(p);
-      if (n >= 1 && n <= 255) command = SetColor{n};
-      else command = Note{" ignored: outside 1..255"};
+      if (n >= 1 && n <= 255) emit(SetColor{n});
+      else emit(Note{" ignored: outside 1..255"});
       break;
     }
     case m::SetWidth: {
       const float w = f32(p);
-      if (w > 0) command = SetWidth{w};
-      else command = Note{" ignored: not positive"};
+      if (w > 0) emit(SetWidth{w});
+      else emit(Note{" ignored: not positive"});
       break;
     }
 
-    case m::Circle0: command = Circle{std::nullopt, false, false}; break;
-    case m::CircleFront0: command = Circle{std::nullopt, false, true}; break;
-    case m::Circle: command = Circle{f32(p), false, false}; break;
-    case m::CircleFront: command = Circle{f32(p), false, true}; break;
-    case m::CircleB: command = Circle{f32(p), true, false}; break;
-    case m::CircleFrontB: command = Circle{f32(p), true, true}; break;
-    case m::Sphere0: command = Sphere{}; break;
-    case m::Sphere: command = Sphere{f32(p)}; break;
+    case m::Circle0: emit(Circle{std::nullopt, false, false}); break;
+    case m::CircleFront0: emit(Circle{std::nullopt, false, true}); break;
+    case m::Circle: emit(Circle{f32(p), false, false}); break;
+    case m::CircleFront: emit(Circle{f32(p), false, true}); break;
+    case m::CircleB: emit(Circle{f32(p), true, false}); break;
+    case m::CircleFrontB: emit(Circle{f32(p), true, true}); break;
+    case m::Sphere0: emit(Sphere{}); break;
+    case m::Sphere: emit(Sphere{f32(p)}); break;
 
-    case m::SP: command = StartPolygon{}; break;
-    case m::EP: command = end_polygon(); break;
-    case m::PP: command = PolygonVertex{}; break;
-    case m::Rhombus: command = Rhombus{f32(p), f32(p, 4)}; break;
-    case m::Triangle: command = Triangle{f32(p), f32(p, 4)}; break;
+    case m::SP: emit(StartPolygon{}); break;
+    case m::EP: emit(end_polygon()); break;
+    case m::PP: emit(PolygonVertex{}); break;
+    case m::Rhombus: emit(Rhombus{f32(p), f32(p, 4)}); break;
+    case m::Triangle: emit(Triangle{f32(p), f32(p, 4)}); break;
 
     case m::Surface: {
       const float s = f32(p, 4);
-      command = Surface{i32(p), {s, s, s}, "Surface"};
+      emit(Surface{i32(p), {s, s, s}, "Surface"});
       break;
     }
-    case m::Surface3: command = Surface{i32(p), v3f(p, 4), "Surface3"}; break;
+    case m::Surface3: emit(Surface{i32(p), v3f(p, 4), "Surface3"}); break;
     case m::Mesh: {
       const float s = f32(p, 4);
-      command = Mesh{i32(p), {s, s, s}, "Mesh"};
+      emit(Mesh{i32(p), {s, s, s}, "Mesh"});
       break;
     }
-    case m::Mesh3: command = Mesh{i32(p), v3f(p, 4), "Mesh3"}; break;
-    case m::SetUPrecision: command = SurfacePrecision{false, precision(p)}; break;
-    case m::SetVPrecision: command = SurfacePrecision{true, precision(p)}; break;
-    case m::InitSurface: command = StartLsystemSurface{}; break;
-    case m::SurfacePoint: command = LsystemSurfacePoint{i32(p, 4), i32(p, 8)}; break;
-    case m::DrawSurface: command = DrawLsystemSurface{}; break;
-    case m::DSurface: command = BezierPatch{p}; break;
+    case m::Mesh3: emit(Mesh{i32(p), v3f(p, 4), "Mesh3"}); break;
+    case m::SetUPrecision: emit(SurfacePrecision{false, precision(p)}); break;
+    case m::SetVPrecision: emit(SurfacePrecision{true, precision(p)}); break;
+    case m::InitSurface: emit(StartLsystemSurface{}); break;
+    case m::SurfacePoint: emit(LsystemSurfacePoint{i32(p, 4), i32(p, 8)}); break;
+    case m::DrawSurface: emit(DrawLsystemSurface{}); break;
+    case m::DSurface: emit(BezierPatch{p}); break;
 
-    case m::StartGC: command = StartCylinder{}; break;
-    case m::PointGC: command = CylinderPoint{}; break;
-    case m::EndGC: command = EndCylinder{}; break;
-    case m::CurrentContour: command = SetContour{i32(p), i32(p), 0, "CurrentContour"}; break;
-    case m::BlendedContour: command = SetContour{i32(p), i32(p, 4), f32(p, 8), "BlendedContour"}; break;
-    case m::ScaleContour: command = ScaleContour{f32(p), f32(p, 4)}; break;
-    case m::ContourSides: command = ContourSides{std::max(3, i32(p))}; break;
+    case m::StartGC: emit(StartCylinder{}); break;
+    case m::PointGC: emit(CylinderPoint{}); break;
+    case m::EndGC: emit(EndCylinder{}); break;
+    case m::CurrentContour: emit(SetContour{i32(p), i32(p), 0, "CurrentContour"}); break;
+    case m::BlendedContour: emit(SetContour{i32(p), i32(p, 4), f32(p, 8), "BlendedContour"}); break;
+    case m::ScaleContour: emit(ScaleContour{f32(p), f32(p, 4)}); break;
+    case m::ContourSides: emit(ContourSides{std::max(3, i32(p))}); break;
 
-    case m::CurrentTexture: command = SetTexture{i32(p)}; break;
-    case m::TextureVCoeff: command = TextureVCoeff{f32(p)}; break;
+    case m::CurrentTexture: emit(SetTexture{i32(p)}); break;
+    case m::TextureVCoeff: emit(TextureVCoeff{f32(p)}); break;
     case m::Label: {
       const char* text = read<const char*>(p);
-      command = Label{text ? text : ""};
+      emit(Label{text ? text : ""});
       break;
     }
 
-    case m::SetElasticity: command = SetElasticity{i32(p), f32(p, 4), false}; break;
+    case m::SetElasticity: emit(SetElasticity{i32(p), f32(p, 4), false}); break;
     case m::IncElasticity:
     case m::DecElasticity: {
       // By the tropism's step (the view file's S:).
       const int t = i32(p);
       const bool known = t >= 1 && static_cast<std::size_t>(t) <= settings_.tropisms.size();
       const float step = known ? settings_.tropisms[static_cast<std::size_t>(t) - 1].step : 0.0f;
-      command = SetElasticity{t, id == m::IncElasticity ? step : -step, true};
+      emit(SetElasticity{t, id == m::IncElasticity ? step : -step, true});
       break;
     }
-    case m::Elasticity: command = SimpleElasticity{f32(p)}; break;
+    case m::Elasticity: emit(SimpleElasticity{f32(p)}); break;
 
-    case m::GetPos: command = Query{Quantity::Position}; break;
-    case m::GetHead: command = Query{Quantity::Heading}; break;
-    case m::GetLeft: command = Query{Quantity::Left}; break;
-    case m::GetUp: command = Query{Quantity::Up}; break;
+    case m::GetPos: emit(Query{Quantity::Position}); break;
+    case m::GetHead: emit(Query{Quantity::Heading}); break;
+    case m::GetLeft: emit(Query{Quantity::Left}); break;
+    case m::GetUp: emit(Query{Quantity::Up}); break;
 
     case m::E1:
     case m::E2:
-    case m::EA20: command = Note{" (no environment: unchanged)"}; break;
-    case m::Camera: command = Camera{}; break;
+    case m::EA20: emit(Note{" (no environment: unchanged)"}); break;
+    case m::Camera: emit(Camera{}); break;
     // Predefined modules the turtle does not act on: a line in the trace, no more.
-    default: command = Note{}; break;
+    default: emit(Note{}); break;
   }
   return true;
 }
+
+template bool LpfgDecoder::decode(ModuleId, const unsigned char*, CommandRunner&) const;
+template bool LpfgDecoder::decode(ModuleId, const unsigned char*, CommandRecorder&) const;
 
 }  // namespace sylva::turtle

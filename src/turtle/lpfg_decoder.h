@@ -17,13 +17,15 @@ class LpfgDecoder {
 
   // The turtle before the string's first module.
   static TurtleState initial_state(const TurtleSettings& settings);
-  // The command of module `id`; false when it is not a predefined module
-  // (user modules are not the turtle's).
-  bool decode(ModuleId id, const unsigned char* params, TurtleCommand& command) const;
+  // Passes the command of module `id` to `emit` (CommandRunner,
+  // CommandRecorder); false, and no command, when it is not a predefined
+  // module (user modules are not the turtle's).
+  template <class Emit>
+  bool decode(ModuleId id, const unsigned char* params, Emit& emit) const;
   // The module as the trace writes it.
   static void append_text(std::string& out, ModuleId id, const unsigned char* params);
   // What closes a polygon the string left open.
-  static TurtleCommand end_polygon() { return command::EndPolygon{}; }
+  static command::EndPolygon end_polygon() { return {}; }
 
  private:
   const TurtleSettings& settings_;

@@ -103,10 +103,10 @@ void ShapeDrawer::require_view_file_id(const char* module, geometry::Provenance 
 }
 
 int ShapeDrawer::surface(const TurtleState& turtle, geometry::Provenance from, int id, Vec3 scale, const char* module,
-                         bool view_texture_first, std::string_view& name) {
+                         bool view_texture_first, const char*& name) {
   require_view_file_id(module, from, "surface", "surfaces", id, settings_.surfaces ? settings_.surfaces->size() : 0);
   const geometry::BezierSurface& s = (*settings_.surfaces)[static_cast<std::size_t>(id)];
-  name = s.name;
+  name = s.name.c_str();
   if (!scene_) return -1;
   const float size = s.size != 0 ? s.size : 1.0f;
   const geometry::Placement place = placement(turtle, s.heading, s.up, s.contact, scale / size);
@@ -120,10 +120,10 @@ int ShapeDrawer::surface(const TurtleState& turtle, geometry::Provenance from, i
 }
 
 int ShapeDrawer::mesh(const TurtleState& turtle, geometry::Provenance from, int id, Vec3 scale, const char* module,
-                      std::string_view& name) {
+                      const char*& name) {
   require_view_file_id(module, from, "mesh", "meshes", id, settings_.meshes ? settings_.meshes->size() : 0);
   const geometry::PredefinedMesh& m = (*settings_.meshes)[static_cast<std::size_t>(id)];
-  name = m.name;
+  name = m.name.c_str();
   if (!scene_) return -1;
   // Mesh coordinates as the turtle's initial frame sees the world: y along H, z along U.
   const geometry::Placement place = placement(turtle, {0, 1, 0}, {0, 0, 1}, m.contact, scale * m.scale);

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <string>
-#include <string_view>
 
 #include "geometry/placement.h"
 #include "geometry/scene.h"
@@ -30,9 +29,9 @@ class ShapeDrawer {
   // names the module in the error thrown when there is no such one.
   // `name` receives the surface's or mesh's name.
   int surface(const TurtleState& turtle, geometry::Provenance from, int id, Vec3 scale, const char* module,
-              bool view_texture_first, std::string_view& name);
+              bool view_texture_first, const char*& name);
   int mesh(const TurtleState& turtle, geometry::Provenance from, int id, Vec3 scale, const char* module,
-           std::string_view& name);
+           const char*& name);
   // 16 control points (12 bytes each) in the turtle's frame.
   int bezier_patch(const TurtleState& turtle, geometry::Provenance from, const unsigned char* points);
   void start_lsystem_surface() { lsystem_surface_ = geometry::BezierPatch{}; }

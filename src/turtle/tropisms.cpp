@@ -1,6 +1,5 @@
 #include "turtle/tropisms.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace sylva::turtle {
@@ -62,19 +61,6 @@ std::optional<float> Tropisms::set(int id, float value, bool relative) {
 void Tropisms::set_simple(float value) {
   elasticity_.back() = value;
   update_bending();
-}
-
-void Tropisms::push() { saved_.insert(saved_.end(), elasticity_.begin(), elasticity_.end()); }
-
-void Tropisms::pop() {
-  const std::size_t n = elasticity_.size();
-  std::copy(saved_.end() - static_cast<std::ptrdiff_t>(n), saved_.end(), elasticity_.begin());
-  saved_.resize(saved_.size() - n);
-  update_bending();
-}
-
-void Tropisms::update_bending() {
-  bending_ = std::any_of(elasticity_.begin(), elasticity_.end(), [](float e) { return e != 0; });
 }
 
 }  // namespace sylva::turtle

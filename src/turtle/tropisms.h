@@ -4,6 +4,7 @@
 // each drawn step (LPFG manual 8.1.4).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -27,12 +28,19 @@ class Tropisms {
   std::optional<float> set(int id, float value, bool relative);
   void set_simple(float value);
 
-  void push();
+  void push() { saved_.insert(saved_.end(), elasticity_.begin(), elasticity_.end()); }
   // Back to the elasticities of the last push (there must be one).
-  void pop();
+  void pop() {
+    const std::size_t n = elasticity_.size();
+    std::copy(saved_.end() - static_cast<std::ptrdiff_t>(n), saved_.end(), elasticity_.begin());
+    saved_.resize(saved_.size() - n);
+    update_bending();
+  }
 
  private:
-  void update_bending();
+  void update_bending() {
+    bending_ = std::any_of(elasticity_.begin(), elasticity_.end(), [](float e) { return e != 0; });
+  }
 
   const TurtleSettings& settings_;
   // The view file's tropisms' (ids 1..n at 0..n-1) and the simple tropism's (at n).

@@ -34,9 +34,9 @@ std::vector<unsigned char> params(Values... values) {
 
 TurtleCommand lpfg(const turtle::TurtleSettings& settings, ModuleId id, const std::vector<unsigned char>& p = params()) {
   turtle::LpfgDecoder decoder(settings);
-  TurtleCommand command;
-  EXPECT_TRUE(decoder.decode(id, p.data(), command));
-  return command;
+  turtle::CommandRecorder recorder;
+  EXPECT_TRUE(decoder.decode(id, p.data(), recorder));
+  return recorder.command;
 }
 
 TEST(LpfgDecoder, StepsAndTurns) {
@@ -105,12 +105,13 @@ TEST(LpfgDecoder, ShapesAndElasticities) {
 TEST(LpfgDecoder, UserModulesAreNotCommands) {
   const turtle::TurtleSettings settings;
   turtle::LpfgDecoder decoder(settings);
-  TurtleCommand command;
+  turtle::CommandRecorder recorder;
   const auto p = params();
-  EXPECT_FALSE(decoder.decode(static_cast<ModuleId>(mid::PredefinedCount), p.data(), command));
+  EXPECT_FALSE(decoder.decode(static_cast<ModuleId>(mid::PredefinedCount), p.data(), recorder));
   // A predefined module the turtle does not act on still has its line in the trace.
-  EXPECT_TRUE(decoder.decode(mid::MouseIns, p.data(), command));
-  EXPECT_STREQ(std::get<cmd::Note>(command).text, "");
+  recorder.command = cmd::Push{};
+  EXPECT_TRUE(decoder.decode(mid::MouseIns, p.data(), recorder));
+  EXPECT_STREQ(std::get<cmd::Note>(recorder.command).text, "");
 }
 
 // ---- cpfg -----------------------------------------------------------------------------
@@ -145,13 +146,14 @@ struct CpfgDecoding {
       : settings(std::move(view)), types(cpfg_types(symbols)), decoder(settings, types) {}
   // Decodes module `name` with `count` parameters; false when it makes no command.
   bool decode(const std::string& name, int count, const std::vector<unsigned char>& p = params()) {
-    return decoder.decode(id_of(types, name, count), p.data(), 0, command);
+    return decoder.decode(id_of(types, name, count), p.data(), 0, recorder);
   }
 
   turtle::TurtleSettings settings;
   ModuleTypes types;
   turtle::CpfgDecoder decoder;
-  TurtleCommand command;
+  turtle::CommandRecorder recorder;
+  const TurtleCommand& command = recorder.command;
 };
 
 TEST(CpfgDecoder, DefaultsComeFromTheViewFile) {
@@ -231,7 +233,7 @@ TEST(CpfgDecoder, LabelsAreFormatted) {
   CpfgDecoding d({{"@L", 1}});
   const char* format = "n=%g";
   const auto p = params(format, 2.5f);
-  ASSERT_TRUE(d.decoder.decode(*d.types.find("@L"), p.data(), 0, d.command));
+  ASSERT_TRUE(d.decoder.decode(*d.types.find("@L"), p.data(), 0, d.recorder));
   EXPECT_EQ(std::get<cmd::Label>(d.command).text, "n=2.5");
   EXPECT_TRUE(std::get<cmd::Label>(d.command).shown);
 }
