@@ -327,8 +327,8 @@ struct CommandResult {
   Vec3 from, to;
   // A surface's or mesh's name.
   const char* name = "";
-  // An elasticity after its change.
-  float value = 0;
+  // SetElasticity: the elasticity after the change.
+  float elasticity = 0;
   // StartPolygon: the polygon's depth; PolygonVertex and Forward in a
   // polygon: the vertex's number; EndPolygon: the polygon's vertices. 0: none.
   int polygon = 0;

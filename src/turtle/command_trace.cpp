@@ -146,7 +146,7 @@ class CommandText {
   void done(const CloseCylinder&) { closed_cylinder(); }
   void done(const SetElasticity&) {
     out_ += " elasticity ";
-    append_number(out_, r_.value);
+    append_number(out_, r_.elasticity);
   }
   void done(const Query& c) {
     out_ += turtle_.in_string() ? " = " : " not in the string: ";

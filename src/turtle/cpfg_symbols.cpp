@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string_view>
 #include <unordered_map>
 
-#include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
 
 namespace sylva::turtle {

@@ -237,7 +237,7 @@ CommandResult CommandDispatcher::run(const SetElasticity& c) {
   const std::optional<float> elasticity = tropisms_.set(c.tropism, c.value, c.relative);
   if (!elasticity) return noted(" ignored: no such tropism");
   CommandResult r;
-  r.value = *elasticity;
+  r.elasticity = *elasticity;
   return r;
 }
 
