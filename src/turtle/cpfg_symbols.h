@@ -1,4 +1,5 @@
-// cpfg's turtle symbols (CPFG manual, chapter 6) as turtle operations.
+// cpfg's turtle symbols (CPFG manual, chapter 6) by module id: the table
+// cpfg_decoder.h reads to make turtle commands of a cpfg model's modules.
 //
 // In a cpfg model every (symbol, parameter count) is its own module type
 // whose name is the symbol ("+", "F", "@O", "?P"), and every parameter is a

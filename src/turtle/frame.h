@@ -9,6 +9,10 @@ namespace sylva::turtle {
 
 using geometry::Vec3;
 
+// Points closer than this are the same point, and vectors shorter than it
+// have no direction (LPFG manual 5.1).
+inline constexpr float kEpsilon = 1e-5f;
+
 // Cosine and sine of an angle in degrees, computed once for repeated angles
 // (a model turns by the same few angles millions of times).
 class AngleCache {

@@ -85,4 +85,29 @@ void append_module(std::string& out, abi::ModuleId id, const unsigned char* para
   out += ')';
 }
 
+void append_cpfg_module(std::string& out, const std::string& symbol, const unsigned char* params, int count,
+                        bool label) {
+  out += symbol;
+  if (label) {
+    // @L("format", p1, ...): the text's pointer, then the floats.
+    const char* text = read<const char*>(params);
+    out += "(\"";
+    out += text ? text : "";
+    out += '"';
+    for (int k = 0; k < count; ++k) {
+      out += ',';
+      append_number(out, read<float>(params + sizeof(const char*) + 4 * static_cast<std::size_t>(k)));
+    }
+    out += ')';
+    return;
+  }
+  if (count == 0) return;
+  out += '(';
+  for (int k = 0; k < count; ++k) {
+    if (k) out += ',';
+    append_number(out, read<float>(params + 4 * static_cast<std::size_t>(k)));
+  }
+  out += ')';
+}
+
 }  // namespace sylva::turtle

@@ -14,6 +14,8 @@
 // frames spread evenly; their contour scale and contour go linearly from one
 // control point to the next, and so does their radius unless @Gr shaped it
 // (geometry/radius_profile.h). One strip is a straight band.
+#include "turtle/cylinder_builder.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -21,106 +23,13 @@
 #include "geometry/face_normals.h"
 #include "geometry/generalized_cylinder.h"
 #include "support/diagnostic.h"
-#include "turtle/interpreter_impl.h"
+#include "turtle/model_error_text.h"
 
 namespace sylva::turtle {
 
-void TurtleInterpreter::Impl::check_contour(int id, const char* module) const {
-  const std::size_t count = settings_.contours ? settings_.contours->size() : 0;
-  if (id == 0 || (id >= 1 && static_cast<std::size_t>(id) <= count)) return;
-  throw ModelError(std::string(module) + where() + ": there is no contour " + std::to_string(id) +
-                   (count ? " (contours are 1 to " + std::to_string(count) + ", 0 is the circle)"
-                          : " (no contour files are given; 0 is the circle)"));
-}
-
-const geometry::Contour& TurtleInterpreter::Impl::contour(int id) const {
-  static const geometry::Contour kCircle = geometry::Contour::circle();
-  if (id <= 0 || !settings_.contours || static_cast<std::size_t>(id) > settings_.contours->size()) return kCircle;
-  return (*settings_.contours)[static_cast<std::size_t>(id) - 1];
-}
-
-// The contour resampled to `sides` points, blended toward a second one.
-// Resamplings are kept: a cylinder asks for the same few at every ring.
-const Vec3* TurtleInterpreter::Impl::contour_points(int id, int blend_id, float blend, int sides) {
-  auto resampled = [&](int which) -> const std::vector<Vec3>& {
-    for (const ResampledContour& r : resampled_)
-      if (r.id == which && r.sides == sides) return r.points;
-    resampled_.push_back(ResampledContour{which, sides, contour(which).resample(sides)});
-    return resampled_.back().points;
-  };
-  const std::vector<Vec3>& a = resampled(id);
-  if (blend == 0 || blend_id == id) return a.data();
-  const std::vector<Vec3>& b = resampled(blend_id);
-  blended_.resize(static_cast<std::size_t>(sides));
-  for (std::size_t k = 0; k < blended_.size(); ++k) blended_[k] = a[k] * (1 - blend) + b[k] * blend;
-  return blended_.data();
-}
-
-bool TurtleInterpreter::Impl::cylinder_open(const TurtleState& s) const {
-  if (s.cylinder < 0) return false;
-  const Cylinder& c = cylinders_[static_cast<std::size_t>(s.cylinder)];
-  return c.open && c.serial == s.cylinder_serial;
-}
-
-TurtleInterpreter::Impl::CylinderPoint TurtleInterpreter::Impl::control_point(int strips) const {
-  CylinderPoint p;
-  p.position = state_.position;
-  p.frame = state_.frame;
-  p.width = state_.width;
-  p.contour = state_.contour;
-  p.blend_contour = state_.blend_contour;
-  p.blend = state_.blend;
-  p.scale_left = state_.contour_scale_left;
-  p.scale_up = state_.contour_scale_up;
-  p.color = state_.color;
-  p.back_color = state_.back_color;
-  p.from = from_;
-  p.strips = std::max(1, strips);
-  p.tangent_start = state_.cylinder_tangent_start;
-  p.tangent_end = state_.cylinder_tangent_end;
-  p.radius_tangents = state_.radius_tangents;
-  return p;
-}
-
-void TurtleInterpreter::Impl::start_cylinder(int type) {
-  // One cylinder at a time per branch: a new one in the same branch ends the
-  // previous; one in a sub-branch leaves the parent's open.
-  if (cylinder_open(state_)) {
-    const bool inherited = !stack_.empty() && stack_.back().cylinder == state_.cylinder &&
-                           stack_.back().cylinder_serial == state_.cylinder_serial;
-    if (!inherited) close_cylinder(state_.cylinder);
-  }
-  std::size_t slot = 0;
-  while (slot < cylinders_.size() && cylinders_[slot].open) ++slot;
-  if (slot == cylinders_.size()) cylinders_.emplace_back();
-  Cylinder& c = cylinders_[slot];
-  c.points.clear();
-  c.open = true;
-  c.type = type;
-  c.serial = next_serial_++;
-  const geometry::Contour& shape = contour(state_.contour);
-  int sides = state_.contour_sides > 0 ? state_.contour_sides : shape.samples > 0 ? shape.samples : settings_.contour_sides;
-  c.sides = std::max(3, sides);
-  // {(type) "does not define the first control point" (CPFG manual 6.7.3).
-  if (type == 0) c.points.push_back(control_point(1));
-  state_.cylinder = static_cast<int>(slot);
-  state_.cylinder_serial = c.serial;
-  if (trace_ && type > 0) *trace_ += " type " + std::to_string(type);
-  note_position(" at ", state_.position);
-}
-
-void TurtleInterpreter::Impl::cylinder_point(int strips) {
-  if (!cylinder_open(state_)) {
-    note(" ignored: no generalized cylinder");
-    return;
-  }
-  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  c.points.push_back(control_point(strips));
-  if (trace_) *trace_ += " point " + std::to_string(c.points.size());
-  note_position(" at ", state_.position);
-}
-
 namespace {
+
+constexpr int kStepStrips = 4;  // the strips of the points after F and f
 
 // Whether the turtle is away from a cylinder's last control point (or the
 // cylinder has none yet).
@@ -128,52 +37,6 @@ template <class Points>
 bool moved_since_last_point(const Points& points, Vec3 position) {
   return points.empty() || length(position - points.back().position) >= kEpsilon;
 }
-
-constexpr int kStepStrips = 4;  // the strips of the points after F and f
-
-}  // namespace
-
-void TurtleInterpreter::Impl::cylinder_dot(int strips) {
-  if (!cylinder_open(state_)) {
-    note(" ignored: no generalized cylinder");
-    return;
-  }
-  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  if (c.type > 0 && !moved_since_last_point(c.points, state_.position)) {
-    // The point the last F or f made: .(strips) gives its stretch's strips.
-    c.points.back().strips = std::max(1, strips);
-    if (trace_) *trace_ += " strips of point " + std::to_string(c.points.size());
-    return;
-  }
-  cylinder_point(strips);
-}
-
-void TurtleInterpreter::Impl::cylinder_step_point() {
-  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  if (c.type == 0 || !moved_since_last_point(c.points, state_.position)) return;
-  c.points.push_back(control_point(kStepStrips));
-  if (trace_) *trace_ += " point " + std::to_string(c.points.size());
-}
-
-void TurtleInterpreter::Impl::end_cylinder(int strips, int type) {
-  if (!cylinder_open(state_)) {
-    note(" ignored: no generalized cylinder");
-    return;
-  }
-  Cylinder& c = cylinders_[static_cast<std::size_t>(state_.cylinder)];
-  if (c.type == 0) {
-    // @Gs ... @Ge(strips) or }(type), @Ge's equivalent: always a last point.
-    c.points.push_back(control_point(type > 0 ? 1 : strips));
-  } else {
-    if (type > 0 && type != c.type && trace_)
-      *trace_ += " (type " + std::to_string(type) + " does not match {(" + std::to_string(c.type) + "))";
-    if (moved_since_last_point(c.points, state_.position)) c.points.push_back(control_point(type > 0 ? kStepStrips : strips));
-  }
-  close_cylinder(state_.cylinder);
-  state_.cylinder = -1;
-}
-
-namespace {
 
 // The number of rings of a cylinder: one per control point and strips - 1
 // inside each stretch; a closed axis has a stretch back to the first point
@@ -197,24 +60,145 @@ float angle_around(Vec3 axis, Vec3 from, Vec3 to) {
 
 }  // namespace
 
-void TurtleInterpreter::Impl::close_cylinder(int index) {
-  Cylinder& c = cylinders_[static_cast<std::size_t>(index)];
-  if (trace_)
-    *trace_ += " cylinder of " + std::to_string(ring_count(c.points, closed_axis(c.type))) + " rings x " + std::to_string(c.sides) +
-               " sides";
-  draw_cylinder(index);
-  c.open = false;
+CylinderBuilder::CylinderBuilder(const TurtleSettings& settings, geometry::Scene* scene)
+    : settings_(settings), scene_(scene) {}
+
+void CylinderBuilder::check_contour(int id, const char* module, geometry::Provenance from) const {
+  const std::size_t count = settings_.contours ? settings_.contours->size() : 0;
+  if (id == 0 || (id >= 1 && static_cast<std::size_t>(id) <= count)) return;
+  throw ModelError(std::string(module) + where(from) + ": there is no contour " + std::to_string(id) +
+                   (count ? " (contours are 1 to " + std::to_string(count) + ", 0 is the circle)"
+                          : " (no contour files are given; 0 is the circle)"));
 }
 
-void TurtleInterpreter::Impl::draw_cylinder(int index) {
-  const Cylinder& c = cylinders_[static_cast<std::size_t>(index)];
+const geometry::Contour& CylinderBuilder::contour(int id) const {
+  static const geometry::Contour kCircle = geometry::Contour::circle();
+  if (id <= 0 || !settings_.contours || static_cast<std::size_t>(id) > settings_.contours->size()) return kCircle;
+  return (*settings_.contours)[static_cast<std::size_t>(id) - 1];
+}
+
+// The contour resampled to `sides` points, blended toward a second one.
+// Resamplings are kept: a cylinder asks for the same few at every ring.
+const Vec3* CylinderBuilder::contour_points(int id, int blend_id, float blend, int sides) {
+  auto resampled = [&](int which) -> const std::vector<Vec3>& {
+    for (const ResampledContour& r : resampled_)
+      if (r.id == which && r.sides == sides) return r.points;
+    resampled_.push_back(ResampledContour{which, sides, contour(which).resample(sides)});
+    return resampled_.back().points;
+  };
+  const std::vector<Vec3>& a = resampled(id);
+  if (blend == 0 || blend_id == id) return a.data();
+  const std::vector<Vec3>& b = resampled(blend_id);
+  blended_.resize(static_cast<std::size_t>(sides));
+  for (std::size_t k = 0; k < blended_.size(); ++k) blended_[k] = a[k] * (1 - blend) + b[k] * blend;
+  return blended_.data();
+}
+
+CylinderBuilder::ControlPoint CylinderBuilder::control_point(const TurtleState& state, geometry::Provenance from,
+                                                             int strips) {
+  ControlPoint p;
+  p.position = state.position;
+  p.frame = state.frame;
+  p.width = state.width;
+  p.contour = state.contour;
+  p.blend_contour = state.blend_contour;
+  p.blend = state.blend;
+  p.scale_left = state.contour_scale_left;
+  p.scale_up = state.contour_scale_up;
+  p.color = state.color;
+  p.back_color = state.back_color;
+  p.from = from;
+  p.strips = std::max(1, strips);
+  p.tangent_start = state.cylinder_tangent_start;
+  p.tangent_end = state.cylinder_tangent_end;
+  p.radius_tangents = state.radius_tangents;
+  return p;
+}
+
+CylinderBuilder::Closed CylinderBuilder::start(TurtleState& state, const TurtleState* parent, int type,
+                                               geometry::Provenance from) {
+  Closed closed;
+  if (open(state)) {
+    const bool inherited =
+        parent && parent->cylinder == state.cylinder && parent->cylinder_serial == state.cylinder_serial;
+    if (!inherited) closed = close(state.cylinder);
+  }
+  std::size_t slot = 0;
+  while (slot < cylinders_.size() && cylinders_[slot].open) ++slot;
+  if (slot == cylinders_.size()) cylinders_.emplace_back();
+  Cylinder& c = cylinders_[slot];
+  c.points.clear();
+  c.open = true;
+  c.type = type;
+  c.serial = next_serial_++;
+  const geometry::Contour& shape = contour(state.contour);
+  int sides = state.contour_sides > 0 ? state.contour_sides : shape.samples > 0 ? shape.samples : settings_.contour_sides;
+  c.sides = std::max(3, sides);
+  // {(type) "does not define the first control point" (CPFG manual 6.7.3).
+  if (type == 0) c.points.push_back(control_point(state, from, 1));
+  state.cylinder = static_cast<int>(slot);
+  state.cylinder_serial = c.serial;
+  return closed;
+}
+
+int CylinderBuilder::add_point(const TurtleState& state, geometry::Provenance from, int strips) {
+  if (!open(state)) return 0;
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
+  c.points.push_back(control_point(state, from, strips));
+  return static_cast<int>(c.points.size());
+}
+
+CylinderBuilder::Dot CylinderBuilder::dot(const TurtleState& state, geometry::Provenance from, int strips) {
+  if (!open(state)) return {};
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
+  if (c.type > 0 && !moved_since_last_point(c.points, state.position)) {
+    // The point the last F or f made: .(strips) gives its stretch's strips.
+    c.points.back().strips = std::max(1, strips);
+    return Dot{static_cast<int>(c.points.size()), true};
+  }
+  return Dot{add_point(state, from, strips), false};
+}
+
+int CylinderBuilder::step_point(const TurtleState& state, geometry::Provenance from) {
+  if (!open(state)) return 0;
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
+  if (c.type == 0 || !moved_since_last_point(c.points, state.position)) return 0;
+  c.points.push_back(control_point(state, from, kStepStrips));
+  return static_cast<int>(c.points.size());
+}
+
+CylinderBuilder::Ended CylinderBuilder::end(TurtleState& state, geometry::Provenance from, int strips, int type) {
+  Cylinder& c = cylinders_[static_cast<std::size_t>(state.cylinder)];
+  Ended ended;
+  ended.opened_type = c.type;
+  if (c.type == 0) {
+    // @Gs ... @Ge(strips) or }(type), @Ge's equivalent: always a last point.
+    c.points.push_back(control_point(state, from, type > 0 ? 1 : strips));
+  } else if (moved_since_last_point(c.points, state.position)) {
+    c.points.push_back(control_point(state, from, type > 0 ? kStepStrips : strips));
+  }
+  ended.closed = close(state.cylinder);
+  state.cylinder = -1;
+  return ended;
+}
+
+CylinderBuilder::Closed CylinderBuilder::close(int slot) {
+  Cylinder& c = cylinders_[static_cast<std::size_t>(slot)];
+  const Closed closed{static_cast<int>(ring_count(c.points, closed_axis(c.type))), c.sides};
+  draw(slot);
+  c.open = false;
+  return closed;
+}
+
+void CylinderBuilder::draw(int slot) {
+  const Cylinder& c = cylinders_[static_cast<std::size_t>(slot)];
   if (!scene_ || c.points.size() < 2) return;
   const int sides = c.sides;
   const auto n_sides = static_cast<std::size_t>(sides);
   const std::size_t n = c.points.size();
   const bool loop = closed_axis(c.type);
   const bool bspline = bspline_axis(c.type);
-  const CylinderPoint& head = c.points.front();
+  const ControlPoint& head = c.points.front();
   const bool closed = contour(head.contour).closed;
   // Bands face outward for a counter-clockwise contour; a clockwise one is
   // turned the other way.
@@ -244,7 +228,7 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
     Frame frame;
   };
   auto anchor = [&](std::size_t k) {
-    const CylinderPoint& p = c.points[k];
+    const ControlPoint& p = c.points[k];
     Anchor a{p.position, p.frame};
     if (bspline) {
       const geometry::BSplineSegment s = bspline_segment(k);
@@ -256,7 +240,7 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
   };
 
   const auto first_vertex = static_cast<std::uint32_t>(scene_->positions.size());
-  auto control_ring = [&](const CylinderPoint& p, const Anchor& at) {
+  auto control_ring = [&](const ControlPoint& p, const Anchor& at) {
     const float radius = p.width / 2;  // the width is the diameter, as for lines
     geometry::place_ring(contour_points(p.contour, p.blend_contour, p.blend, sides), sides, at.position,
                          at.frame.heading, at.frame.left, at.frame.up, radius * p.scale_left, radius * p.scale_up,
@@ -267,9 +251,9 @@ void TurtleInterpreter::Impl::draw_cylinder(int index) {
   const auto first_index = static_cast<std::uint32_t>(scene_->indices.size());
   const std::size_t stretches = loop ? n : n - 1;
   for (std::size_t k = 0; k < stretches; ++k) {
-    const CylinderPoint& a = c.points[k];
+    const ControlPoint& a = c.points[k];
     const bool back_to_head = k + 1 == n;  // a closed axis's last stretch
-    const CylinderPoint& b = c.points[back_to_head ? 0 : k + 1];
+    const ControlPoint& b = c.points[back_to_head ? 0 : k + 1];
     const Anchor to = anchor(back_to_head ? 0 : k + 1);
     const auto stretch_first = static_cast<std::uint32_t>(scene_->positions.size()) - static_cast<std::uint32_t>(sides);
     const float distance = length(to.position - from.position);
