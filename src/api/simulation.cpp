@@ -160,7 +160,7 @@ void Simulation::begin() {
 
 bool Simulation::step() {
   begin();
-  if (finished_ || derivation_->stop_requested()) return false;
+  if (finished_ || stopped()) return false;
   const auto started = std::chrono::steady_clock::now();
   // lpfg's Derive and cpfg's Derive both begin with the environmental pass,
   // before StartEach: a run of n steps has n passes, the last one before the
@@ -215,8 +215,10 @@ void Simulation::fill_query_modules() {
 }
 
 bool Simulation::fills_query_modules() const { return derivation_->uses_query_modules(); }
-bool Simulation::stopped() const { return derivation_->stop_requested(); }
-int Simulation::step_number() const { return derivation_->steps_done(); }
+// Before begin() the derivation still holds the last run's state: a
+// rewound run has taken no steps and has not stopped.
+bool Simulation::stopped() const { return begun_ && derivation_->stop_requested(); }
+int Simulation::step_number() const { return begun_ ? derivation_->steps_done() : 0; }
 int Simulation::derivation_length() const { return derivation_->derivation_length(); }
 
 // ---- what the model asks for ------------------------------------------------------

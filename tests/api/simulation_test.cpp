@@ -54,6 +54,7 @@ TEST(SimulationSteps, StepByStepThenRewindToTheAxiom) {
   EXPECT_FALSE(s->step()) << "a finished run takes no more steps";
 
   s->rewind();
+  EXPECT_EQ(s->step_number(), 0);
   s->begin();
   EXPECT_EQ(s->step_number(), 0);
   EXPECT_EQ(text(*s), "A");
@@ -89,6 +90,10 @@ TEST(SimulationSteps, StopEndsTheRun) {
   EXPECT_EQ(s->step_number(), 2);
   EXPECT_EQ(text(*s), "A(2)");
   EXPECT_FALSE(s->step());
+  s->rewind();
+  EXPECT_FALSE(s->stopped());
+  EXPECT_TRUE(s->step()) << "a rewound run steps again";
+  EXPECT_EQ(text(*s), "A(1)");
 }
 
 // The studio's edit loop: the same model opened again with another value,
