@@ -45,6 +45,7 @@ struct Translation {
   const char* cpfg;
   const char* cpp;
 };
+void PrintTo(const Translation& t, std::ostream* os) { *os << '"' << t.cpfg << '"'; }
 
 class CpfgExpression : public ::testing::TestWithParam<Translation> {};
 
@@ -56,14 +57,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Translation{"1.5f", "1.5"}, Translation{"1e3", "1e3"}, Translation{"(x)", "(v_x)"},
                       Translation{"x+1", "(v_x + 1.0)"}, Translation{"x*y+1", "((v_x * v_y) + 1.0)"},
                       Translation{"x-y-1", "((v_x - v_y) - 1.0)"},
-                      Translation{"x^2^3", "sylva_cpfg_pow(sylva_cpfg_pow(v_x, 2.0), 3.0)"},
-                      Translation{"2*x^2", "(2.0 * sylva_cpfg_pow(v_x, 2.0))"},
+                      Translation{"x^2^3", "::sylva::rt::cpfg::pow(::sylva::rt::cpfg::pow(v_x, 2.0), 3.0)"},
+                      Translation{"2*x^2", "(2.0 * ::sylva::rt::cpfg::pow(v_x, 2.0))"},
                       Translation{"-x*2", "((-v_x) * 2.0)"}, Translation{"x%2", "::std::fmod(v_x, 2.0)"},
                       Translation{"x<1 && y>=2 || !x", "(((v_x < 1.0) && (v_y >= 2.0)) || (!v_x))"},
                       Translation{"x==1 ? 2 : 3", "(((v_x == 1.0)) ? (double)(2.0) : (double)(3.0))"},
-                      Translation{"sin(x)", "sylva_cpfg_sin((double)(v_x))"},
-                      Translation{"atan(y, x)", "sylva_cpfg_atan((double)(v_y), (double)(v_x))"},
-                      Translation{"ran(1)", "sylva_cpfg_ran((double)(1.0))"},
+                      Translation{"sin(x)", "::sylva::rt::cpfg::sin((double)(v_x))"},
+                      Translation{"atan(y, x)", "::sylva::rt::cpfg::atan((double)(v_y), (double)(v_x))"},
+                      Translation{"ran(1)", "::sylva::rt::cpfg::ran((double)(1.0))"},
                       Translation{"sqrt(x)", "::std::sqrt((double)(v_x))"},
                       Translation{"x > 1 -->", "(v_x > 1.0)"}));  // stops at the arrow
 

@@ -193,6 +193,8 @@ struct BadLsystem {
   const char* error;
 };
 
+void PrintTo(const BadLsystem& b, std::ostream* os) { *os << '"' << b.error << '"'; }
+
 class CpfgParserErrors : public ::testing::TestWithParam<BadLsystem> {};
 
 TEST_P(CpfgParserErrors, PointAtTheProblem) {

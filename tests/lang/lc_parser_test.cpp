@@ -209,6 +209,8 @@ struct BadSource {
   const char* error;
 };
 
+void PrintTo(const BadSource& b, std::ostream* os) { *os << '"' << b.error << '"'; }
+
 class LcParserErrors : public ::testing::TestWithParam<BadSource> {};
 
 TEST_P(LcParserErrors, PointAtTheProblem) {
