@@ -132,12 +132,9 @@ Simulation::~Simulation() {
   }
 }
 
-void Simulation::tell(const std::string& text) {
-  if (RepeatedWarnings::is_warning(text) &&
-      std::find(warnings_told_.begin(), warnings_told_.end(), text) == warnings_told_.end())
-    warnings_told_.push_back(text);
-  (*warnings_)(text);
-}
+void Simulation::tell(const std::string& text) { (*warnings_)(text); }
+
+const std::vector<std::string>& Simulation::warnings() const { return warnings_->distinct(); }
 
 // ---- the run -------------------------------------------------------------------
 

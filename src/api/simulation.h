@@ -119,7 +119,7 @@ class Simulation {
   // Seconds each step of this run took, environment and query passes included.
   const std::vector<double>& step_seconds() const { return step_seconds_; }
   // Every distinct warning told so far, in order.
-  const std::vector<std::string>& warnings() const { return warnings_told_; }
+  const std::vector<std::string>& warnings() const;
 
   // ---- what the string is
   const ModuleString& string() const;
@@ -178,7 +178,6 @@ class Simulation {
   // Every message of the run passes here: a warning that repeats is told once,
   // with its count when the simulation ends.
   std::shared_ptr<RepeatedWarnings> warnings_;
-  std::vector<std::string> warnings_told_;
   std::unique_ptr<io::InputFiles> inputs_;
   std::unique_ptr<InputAnswers> answers_;
   turtle::TurtleSettings turtle_settings_;

@@ -22,6 +22,8 @@ class RepeatedWarnings {
   // The counts of the warnings that came more than once, in the order they
   // first came; then counting starts afresh.
   void finish();
+  // Each distinct warning passed on since the last finish(), in order.
+  const std::vector<std::string>& distinct() const { return order_; }
 
   // "warning: ..." or "file:line: warning: ...".
   static bool is_warning(const std::string& text);
