@@ -26,13 +26,13 @@ std::string read_text(const std::string& path) {
 }
 
 // Without a specifications file, a panel edits the file of its own kind:
-// panel.l the L-system, panel.a the animation file, panel.v the view file.
-std::string target_by_kind(const std::string& panel, const std::string& model,
-                           const std::vector<io::InputFile>& inputs) {
+// panel.l the L-system (with awkped), panel.a the animation file, panel.v
+// the view file (with ped, as the Virtual Laboratory's objects edit them).
+Binding binding_by_kind(const std::string& panel, const std::string& model, const std::vector<io::InputFile>& inputs) {
   const io::InputKind kind = io::input_kind_of(panel);
   for (const io::InputFile& input : inputs)
-    if (kind != io::InputKind::Unknown && input.kind == kind) return input.path;
-  return model;
+    if (kind != io::InputKind::Unknown && input.kind == kind) return {panel, input.path, ParameterEditor::Ped};
+  return {panel, model, ParameterEditor::Awkped};
 }
 
 std::vector<Binding> panel_bindings(const std::string& folder, const std::string& model,
@@ -52,7 +52,7 @@ std::vector<Binding> panel_bindings(const std::string& folder, const std::string
         looks_like_panel(read_text(entry.path().string())))
       panels.push_back(entry.path().string());
   std::sort(panels.begin(), panels.end());
-  for (const std::string& panel : panels) out.push_back({panel, target_by_kind(panel, model, inputs)});
+  for (const std::string& panel : panels) out.push_back(binding_by_kind(panel, model, inputs));
   return out;
 }
 
