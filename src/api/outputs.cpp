@@ -60,6 +60,12 @@ void write_image(const std::string& path, const geometry::Scene& scene, const Si
                                        options.width, options.height));
 }
 
+geometry::TriangleMesh mesh_of(const geometry::Scene& scene, const geometry::TessellationOptions& tessellation) {
+  geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
+  geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
+  return mesh;
+}
+
 // The mesh files' mesh of a scene (cpfg's background included).
 geometry::TriangleMesh export_mesh(const geometry::Scene& scene, const Simulation& simulation) {
   const io::ViewFile& view = view_or_default(simulation);
@@ -69,9 +75,7 @@ geometry::TriangleMesh export_mesh(const geometry::Scene& scene, const Simulatio
   const geometry::TessellationOptions tessellation = simulation.types().cpfg()
                                                         ? view.tessellation_options()
                                                         : geometry::lpfg_export_options(view.contour_sides);
-  geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
-  geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
-  return mesh;
+  return mesh_of(scene, tessellation);
 }
 
 // cpfg's background scene, drawn first, with the plant.
@@ -123,10 +127,10 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
 }
 
 std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation) {
+  const io::ViewFile& view = view_or_default(simulation);
   const geometry::TriangleMesh mesh =
-      export_mesh(simulation.inputs().background ? with_background(plant, simulation) : plant, simulation);
-  return io::encode_glb(mesh, simulation.inputs().palette, simulation.types(),
-                        texture_images(view_or_default(simulation), simulation));
+      mesh_of(simulation.inputs().background ? with_background(plant, simulation) : plant, view.tessellation_options());
+  return io::encode_glb(mesh, simulation.inputs().palette, simulation.types(), texture_images(view, simulation));
 }
 
 int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps) {

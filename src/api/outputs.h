@@ -18,7 +18,9 @@ void check_output_path(const std::string& path);
 void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
                   const OutputOptions& options, int view = 0);
 
-// The binary glTF file write_output writes for `scene`, as bytes.
+// `scene` as binary glTF (write_glb's layout, provenance included) drawn as
+// the view file draws it: its line style (pixel lines as glTF lines) and
+// contour sides, rather than as a mesh file exports it. What a viewer shows.
 std::string scene_glb(const geometry::Scene& scene, const Simulation& simulation);
 
 // Runs the derivation again from the axiom and writes one PNG per frame of

@@ -252,7 +252,8 @@ void ModelSession::fetch_scene() {
   if (!call({{"op", "scene"}, {"view", status_.value("primary_view", 0)}}, options_.time_limit_seconds, &answer))
     return;
   std::lock_guard state(state_mutex_);
-  scene_ = std::make_shared<const std::string>(std::move(answer.payload));
+  const std::size_t glb_size = std::min(answer.payload.size(), answer.json.value("glb_size", answer.payload.size()));
+  scene_ = std::make_shared<const Picture>(Picture{answer.payload.substr(0, glb_size), answer.payload.substr(glb_size)});
   view_ = answer.json["view"];
   ++scene_version_;
   ++version_;
@@ -366,13 +367,14 @@ json ModelSession::state_json() const {
               {"warnings", status_.value("warnings", json::array())},
               {"messages", messages_},
               {"view", view_},
+              {"instances", scene_ && !scene_->instances.empty()},
               {"params", params},
               {"params_modified", modified},
               {"formats", {"png", "svg", "pdf", "ps", "eps", "obj", "mtl", "ply", "glb", "string"}}};
   return out;
 }
 
-std::pair<std::shared_ptr<const std::string>, std::uint64_t> ModelSession::scene() const {
+std::pair<std::shared_ptr<const ModelSession::Picture>, std::uint64_t> ModelSession::scene() const {
   std::lock_guard state(state_mutex_);
   return {scene_, scene_version_};
 }

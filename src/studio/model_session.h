@@ -60,8 +60,12 @@ class ModelSession {
   void interrupt();
 
   nlohmann::json state_json() const;
-  // The current picture (binary glTF) and its version; empty before the first.
-  std::pair<std::shared_ptr<const std::string>, std::uint64_t> scene() const;
+  // The current picture and its version; empty before the first.
+  struct Picture {
+    std::string glb;        // binary glTF
+    std::string instances;  // scene_instances.h; empty for a small scene
+  };
+  std::pair<std::shared_ptr<const Picture>, std::uint64_t> scene() const;
   // Pass-through requests (worker.h): string, counts, module, export. Throws
   // std::runtime_error with the worker's message when it fails.
   WorkerMessage ask(const nlohmann::json& request);
@@ -98,7 +102,7 @@ class ModelSession {
   std::string busy_;
   std::string messages_;
   std::uint64_t version_ = 1, scene_version_ = 0;
-  std::shared_ptr<const std::string> scene_;
+  std::shared_ptr<const Picture> scene_;
 };
 
 }  // namespace sylva::studio

@@ -141,16 +141,26 @@ struct StudioServer::Impl {
     http.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
       send_json(res, session.state_json());
     });
-    http.Get("/api/scene.glb", [this](const httplib::Request&, httplib::Response& res) {
-      auto [scene, version] = session.scene();
-      if (!scene) {
-        res.status = 204;
-        return;
-      }
-      res.set_content(scene->data(), scene->size(), "model/gltf-binary");
-      res.set_header("X-Sylva-Scene-Version", std::to_string(version));
-      res.set_header("Cache-Control", "no-store");
-    });
+    // The picture in two parts: its triangles and lines, and its instances.
+    auto picture_part = [this](std::string ModelSession::Picture::*part, const char* type) {
+      return [this, part, type](const httplib::Request&, httplib::Response& res) {
+        auto [scene, version] = session.scene();
+        if (!scene || ((*scene).*part).empty()) {
+          res.status = 204;
+          return;
+        }
+        // The picture is shared, not copied: it outlives the answer.
+        res.set_content_provider(((*scene).*part).size(), type,
+                                 [scene = scene, part](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                   sink.write(((*scene).*part).data() + offset, length);
+                                   return true;
+                                 });
+        res.set_header("X-Sylva-Scene-Version", std::to_string(version));
+        res.set_header("Cache-Control", "no-store");
+      };
+    };
+    http.Get("/api/scene.glb", picture_part(&ModelSession::Picture::glb, "model/gltf-binary"));
+    http.Get("/api/scene-instances.bin", picture_part(&ModelSession::Picture::instances, "application/octet-stream"));
 
     auto post = [this](const char* path, auto action) {
       http.Post(path, [this, action](const httplib::Request& req, httplib::Response& res) {

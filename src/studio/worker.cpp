@@ -16,6 +16,7 @@
 #include "io/output_file.h"
 #include "support/diagnostic.h"
 #include "support/whole_file.h"
+#include "studio/scene_instances.h"
 #include "studio/worker_protocol.h"
 
 namespace sylva::studio {
@@ -172,11 +173,19 @@ class Worker {
     return {out, {}};
   }
 
+  // The picture: binary glTF, then the instances of a big scene's spheres
+  // and cylinders (scene_instances.h), "glb_size" telling where one ends.
   WorkerMessage scene(int view, int width, int height) {
-    const geometry::Scene scene = simulation_->scene(view);
+    geometry::Scene scene = simulation_->scene(view);
     WorkerMessage out = status();
     out.json["view"] = camera_json(*simulation_, scene, view, width, height);
+    static const io::ViewFile defaults;
+    const io::ViewFile& view_file = simulation_->inputs().view ? *simulation_->inputs().view : defaults;
+    const std::string instances =
+        take_instances(scene, simulation_->inputs().palette, view_file.tessellation_options());
     out.payload = scene_glb(scene, *simulation_);
+    out.json["glb_size"] = out.payload.size();
+    out.payload += instances;
     return out;
   }
 

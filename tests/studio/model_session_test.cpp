@@ -72,7 +72,8 @@ TEST(ModelSession, StepsRunAndRewinds) {
   session.rewind();
   EXPECT_EQ(session.state_json()["step"], 0);
   // A picture is binary glTF.
-  EXPECT_EQ(session.scene().first->substr(0, 4), "glTF");
+  EXPECT_EQ(session.scene().first->glb.substr(0, 4), "glTF");
+  EXPECT_EQ(session.scene().first->instances, "");  // a small scene stays whole
 }
 
 TEST(ModelSession, ATranslationErrorIsPlacedInTheSourceAndThePictureStays) {
