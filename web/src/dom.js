@@ -1,0 +1,44 @@
+// Small DOM helpers: the page is built from plain elements.
+
+// el('div.a.b', {title: 'x', onclick: f}, child, 'text', ...)
+export function el(spec, props = {}, ...children) {
+  const [tag, ...classes] = spec.split('.');
+  const node = document.createElement(tag || 'div');
+  if (classes.length) node.className = classes.join(' ');
+  for (const [key, value] of Object.entries(props)) {
+    if (key.startsWith('on')) node.addEventListener(key.slice(2), value);
+    else if (key === 'dataset') Object.assign(node.dataset, value);
+    else if (key in node && key !== 'list') node[key] = value;
+    else node.setAttribute(key, value);
+  }
+  for (const child of children.flat()) {
+    if (child == null || child === false) continue;
+    node.append(child instanceof Node ? child : String(child));
+  }
+  return node;
+}
+
+export const $ = (selector, root = document) => root.querySelector(selector);
+
+export function formatCount(n) {
+  return n == null ? '–' : Number(n).toLocaleString('en-US');
+}
+
+// The function runs `ms` after the last call; flush() runs a pending call now.
+export function debounce(fn, ms) {
+  let timer = null;
+  let pending = null;
+  const run = () => {
+    timer = null;
+    const args = pending;
+    pending = null;
+    fn(...args);
+  };
+  const debounced = (...args) => {
+    pending = args;
+    clearTimeout(timer);
+    timer = setTimeout(run, ms);
+  };
+  debounced.pending = () => timer !== null;
+  return debounced;
+}
