@@ -85,8 +85,8 @@ export class Inspector {
         row('Made at step', module.step),
         row('Drawn', ranges.length ? `${elementCount(elements)} in ${ranges.length} part${ranges.length > 1 ? 's' : ''}` : 'nothing'),
       ),
-      fromPick ? null : el('p.hint', {}, 'Picked from the string.'),
     );
+    if (!fromPick) this.page.append(el('p.hint', {}, 'Picked from the string.'));
   }
 }
 

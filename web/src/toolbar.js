@@ -2,8 +2,8 @@
 import { el, formatCount } from './dom.js';
 
 export function animateToolbar(animator) {
-  const button = (name, key, title, action) => el('button.anim', { type: 'button', dataset: { action: name },
-    title: `${title} (${key})`, onclick: action }, name);
+  const button = (label, key, title, action) => el('button.anim', { type: 'button',
+    dataset: { action: label.toLowerCase() }, title: `${title} (${key})`, onclick: action }, label);
   const buttons = {
     step: button('Step', 's', 'Advance by the animation step and redraw', () => animator.step()),
     run: button('Run', 'r', 'Step and redraw until the last frame', () => animator.run()),
