@@ -60,6 +60,27 @@ void write_image(const std::string& path, const geometry::Scene& scene, const Si
                                        options.width, options.height));
 }
 
+// The mesh files' mesh of a scene (cpfg's background included).
+geometry::TriangleMesh export_mesh(const geometry::Scene& scene, const Simulation& simulation) {
+  const io::ViewFile& view = view_or_default(simulation);
+  // An L+C model's mesh is what lpfg exports (lines as cylinders of the
+  // turtle's width whatever the line style); cpfg exports no meshes, so
+  // a cpfg model's follows its view file.
+  const geometry::TessellationOptions tessellation = simulation.types().cpfg()
+                                                        ? view.tessellation_options()
+                                                        : geometry::lpfg_export_options(view.contour_sides);
+  geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
+  geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
+  return mesh;
+}
+
+// cpfg's background scene, drawn first, with the plant.
+geometry::Scene with_background(const geometry::Scene& plant, const Simulation& simulation) {
+  geometry::Scene scene = *simulation.inputs().background;
+  scene.append(plant);
+  return scene;
+}
+
 }  // namespace
 
 void check_output_path(const std::string& path) {
@@ -71,13 +92,9 @@ void check_output_path(const std::string& path) {
 void write_output(const std::string& path, const geometry::Scene& plant, const Simulation& simulation,
                   const OutputOptions& options, int view_id) {
   check_output_path(path);
-  // cpfg's background scene, drawn first, with the plant.
-  geometry::Scene with_background;
-  if (simulation.inputs().background) {
-    with_background = *simulation.inputs().background;
-    with_background.append(plant);
-  }
-  const geometry::Scene& scene = simulation.inputs().background ? with_background : plant;
+  geometry::Scene background_and_plant;
+  if (simulation.inputs().background) background_and_plant = with_background(plant, simulation);
+  const geometry::Scene& scene = simulation.inputs().background ? background_and_plant : plant;
   const io::ViewFile& view = view_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
   const Format f = format_of(path);
@@ -85,14 +102,7 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
-      // An L+C model's mesh is what lpfg exports (lines as cylinders of the
-      // turtle's width whatever the line style); cpfg exports no meshes, so
-      // a cpfg model's follows its view file.
-      const geometry::TessellationOptions tessellation = simulation.types().cpfg()
-                                                            ? view.tessellation_options()
-                                                            : geometry::lpfg_export_options(view.contour_sides);
-      geometry::TriangleMesh mesh = geometry::tessellate(scene, tessellation);
-      geometry::split_back_sides(mesh);  // cpfg's back-side colours as parts of their own
+      const geometry::TriangleMesh mesh = export_mesh(scene, simulation);
       if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
       else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
       else io::write_glb(path, mesh, palette, simulation.types(), texture_images(view, simulation));
@@ -110,6 +120,13 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
     case Format::Unknown:
       break;
   }
+}
+
+std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation) {
+  const geometry::TriangleMesh mesh =
+      export_mesh(simulation.inputs().background ? with_background(plant, simulation) : plant, simulation);
+  return io::encode_glb(mesh, simulation.inputs().palette, simulation.types(),
+                        texture_images(view_or_default(simulation), simulation));
 }
 
 int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps) {

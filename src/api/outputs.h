@@ -18,6 +18,9 @@ void check_output_path(const std::string& path);
 void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
                   const OutputOptions& options, int view = 0);
 
+// The binary glTF file write_output writes for `scene`, as bytes.
+std::string scene_glb(const geometry::Scene& scene, const Simulation& simulation);
+
 // Runs the derivation again from the axiom and writes one PNG per frame of
 // the animation file (every step when there is none) into `dir` as
 // frame-NNNN.png, N being the step. The camera frames the last frame's

@@ -13,6 +13,7 @@
 #include "api/reference_command_line.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
+#include "app/studio_command.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
 #include "io/string_reader.h"
@@ -112,6 +113,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && std::string(argv[1]) == sylva::app::kStudioWorkerCommand) return sylva::app::run_studio_worker();
   CLI::App app{"Sylva: L-system plant modelling. Runs L+C models as lpfg does."};
   // Usage errors read like the others: "sylva: error: ...".
   app.failure_message([](const CLI::App* a, const CLI::Error& e) {
@@ -200,22 +202,32 @@ int main(int argc, char** argv) {
       ->type_name("FILE");
   add_build_options(*translate, translate_options);
 
-  // `run` takes lpfg's and cpfg's command lines as they are: their files and
-  // options are taken out first, and Sylva's own options left for CLI11.
+  CommonOptions studio_build;
+  sylva::app::StudioOptions studio_options;
+  CLI::App* studio = sylva::app::add_studio_command(app, studio_options);
+  add_build_options(*studio, studio_build);
+
+  // `run` and `studio` take lpfg's and cpfg's command lines as they are:
+  // their files and options are taken out first, and Sylva's own options
+  // left for CLI11.
   std::vector<std::string> arguments(argv + 1, argv + argc);
   std::vector<std::string> reference_outputs;
   std::string reference_string;
-  if (!arguments.empty() && arguments[0] == "run") {
+  CLI::App* reference_command = arguments.empty()           ? nullptr
+                                : arguments[0] == "run"    ? run
+                                : arguments[0] == "studio" ? studio
+                                                           : nullptr;
+  if (reference_command) {
     try {
       sylva::ReferenceCommandLine line = sylva::read_reference_command_line(
-          {arguments.begin() + 1, arguments.end()}, [run](const std::string& name) -> std::optional<int> {
-            const CLI::Option* option = run->get_option_no_throw(name);
+          {arguments.begin() + 1, arguments.end()}, [reference_command](const std::string& name) -> std::optional<int> {
+            const CLI::Option* option = reference_command->get_option_no_throw(name);
             if (option == nullptr) return std::nullopt;
             return option->get_expected_max() == 0 ? 0 : option->get_type_size();  // a flag, or one value
           });
       for (const std::string& note : line.notes) std::fprintf(stderr, "sylva: note: %s\n", note.c_str());
-      r.model = line.model;
-      r.inputs = line.inputs;
+      studio_options.model = r.model = line.model;
+      studio_options.inputs = r.inputs = line.inputs;
       reference_outputs = line.outputs;
       reference_string = line.string_path;
       r.interpreted_string = line.interpreted_string;
@@ -223,7 +235,7 @@ int main(int argc, char** argv) {
       r.environment.clean_ea20 = line.clean_ea20;
       if (line.width) r.output.width = *line.width;
       if (line.height) r.output.height = *line.height;
-      arguments.assign(1, "run");
+      arguments.assign(1, arguments[0]);
       arguments.insert(arguments.end(), line.sylva_arguments.begin(), line.sylva_arguments.end());
     } catch (const std::exception& e) {
       std::fprintf(stderr, "sylva: error: %s\n", e.what());
@@ -233,7 +245,7 @@ int main(int argc, char** argv) {
   try {
     std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
     app.parse(arguments);
-    if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run or translate)");
+    if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run, studio or translate)");
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
@@ -242,6 +254,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(r, run_options);
+    if (*studio) return sylva::app::run_studio(studio_options, studio_build.build);
     if (*translate) {
       sylva::io::write_output_file(translate_output,
                                    sylva::build::translate_model(translate_model, translate_options.build));

@@ -67,6 +67,7 @@ struct ResolvedOptions {
   fs::path cache_dir;
   std::string runtime;
   std::vector<std::string> defines;
+  std::vector<std::string> include_dirs;
   std::string language;
 };
 
@@ -76,12 +77,14 @@ ResolvedOptions resolve(const BuildOptions& options) {
   r.cache_dir = options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
   r.runtime = options.runtime_include_dir.empty() ? default_runtime_include_dir() : options.runtime_include_dir;
   r.defines = options.defines;
+  r.include_dirs = options.include_dirs;
   r.language = options.language;
   return r;
 }
 
 lang::TranslatorOptions translator_options(const ResolvedOptions& r) {
-  return lang::TranslatorOptions{r.compiler, r.runtime, r.defines, r.language.empty() ? "auto" : r.language};
+  return lang::TranslatorOptions{r.compiler, r.runtime, r.defines, r.include_dirs,
+                                 r.language.empty() ? "auto" : r.language};
 }
 
 // The key of the direct lookup: the model file itself and the tools.
@@ -94,6 +97,7 @@ std::string direct_key(const std::string& model_path, const std::string& source,
   h.add(file_stamp(find_in_path(r.compiler)));
   h.add(r.runtime);
   for (const std::string& d : r.defines) h.add(d);
+  for (const std::string& d : r.include_dirs) h.add("-I" + d);
   h.add("language=" + r.language);
   return h.hex();
 }

@@ -13,6 +13,9 @@ struct BuildOptions {
   std::string cache_dir;            // empty: $SYLVA_CACHE_DIR or ~/.cache/sylva
   std::string runtime_include_dir;  // empty: the runtime this program was built with
   std::vector<std::string> defines;
+  // Searched for included files after the model's own folder (a copy of a
+  // model kept elsewhere still finds the files beside the original).
+  std::vector<std::string> include_dirs;
   bool verbose = false;             // say what is being done on stderr
   std::string language;             // empty or "auto": recognised; "cpfg" or "lc"
 };

@@ -193,8 +193,8 @@ class GlbBuilder {
 
 }  // namespace
 
-void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types, const std::vector<TextureImage>& textures) {
+std::string encode_glb(const geometry::TriangleMesh& mesh, const geometry::Palette& palette, const ModuleTypes& types,
+                       const std::vector<TextureImage>& textures) {
   static_assert(sizeof(Vec3) == 12, "positions are copied as packed float triples");
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -262,9 +262,13 @@ void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, cons
 
   std::ostringstream stream;
   tinygltf::TinyGLTF gltf;
-  if (!gltf.WriteGltfSceneToStream(&model, stream, false, true))
-    throw ModelError(SourceLocation{path, 0, 0}, "cannot encode the glTF file");
-  write_output_file(path, std::move(stream).str());
+  if (!gltf.WriteGltfSceneToStream(&model, stream, false, true)) throw ModelError("cannot encode the glTF file");
+  return std::move(stream).str();
+}
+
+void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types, const std::vector<TextureImage>& textures) {
+  write_output_file(path, encode_glb(mesh, palette, types, textures));
 }
 
 }  // namespace sylva::io

@@ -47,5 +47,8 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
 // as PNG, with TEXCOORD_0 from the mesh's texture coordinates.
 void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
                const ModuleTypes& types, const std::vector<TextureImage>& textures = {});
+// The bytes write_glb writes.
+std::string encode_glb(const geometry::TriangleMesh& mesh, const geometry::Palette& palette, const ModuleTypes& types,
+                       const std::vector<TextureImage>& textures = {});
 
 }  // namespace sylva::io

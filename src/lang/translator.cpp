@@ -61,6 +61,7 @@ Translation translate_cpfg(const std::string& model_path, const TranslatorOption
   std::string dir = fs::path(model_path).parent_path().string();
   argv.push_back("-I");
   argv.push_back(dir.empty() ? "." : dir);
+  for (const std::string& d : options.include_dirs) argv.insert(argv.end(), {"-I", d});
   argv.push_back(model_path);
   ProcessResult pre = run_process(argv);
   if (pre.exit_code != 0) preprocessor_failed(model_path, pre);
@@ -137,6 +138,7 @@ Translation translate_file(const std::string& model_path, const TranslatorOption
   std::string dir = fs::path(model_path).parent_path().string();
   argv.push_back("-I");
   argv.push_back(dir.empty() ? "." : dir);
+  for (const std::string& d : options.include_dirs) argv.insert(argv.end(), {"-I", d});
   // Models that do not include lpfgall.h get it first, as if they had.
   if (source.find("lpfgall.h") == std::string::npos) {
     argv.push_back("-include");

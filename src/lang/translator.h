@@ -11,6 +11,7 @@ struct TranslatorOptions {
   std::string compiler = "g++";           // its preprocessor is used
   std::string runtime_include_dir;         // where lpfgall.h lives
   std::vector<std::string> defines;        // -D for the preprocessor
+  std::vector<std::string> include_dirs;   // -I after the model's folder
   // "auto" (or empty): cpfg if the file has `Lsystem:` ... `endlsystem` lines,
   // L+C otherwise; "cpfg" or "lc" to say which.
   std::string language = "auto";
