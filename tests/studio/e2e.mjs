@@ -35,9 +35,8 @@ async function open(name, files) {
   const close = async () => {
     await page.close();
     await studio.stop();
-    assert.deepEqual(problems, [], 'the page threw');
   };
-  return { folder, studio, page, close };
+  return { folder, studio, page, problems, close };
 }
 
 async function screenshot(page, label) {
@@ -60,14 +59,18 @@ async function click(page, action) {
   await page.click(`button[data-action="${action}"]`);
 }
 
-const tests = {
-  async 'picture, Step, Run, slider, edit, translation error, files'() {
-    const { folder, studio, page, close } = await open('branching2d', ['branching.l', 'branching.v']);
-    const model = join(folder, 'branching.l');
+// Each test's model (a folder of models/) and the files the studio opens.
+const MODELS = {
+  branching2d: ['branching.l', 'branching.v'],
+  tree3d: ['tree.l', 'tree.v'],
+  crash: ['crash.l'],
+};
+
+// [name, model, test]
+const tests = [
+  ['the picture; Step and Run advance it', 'branching2d', async ({ page }) => {
     let state = await waitForStudio(page, 'state.scene_version > 0');
     assert.equal(state.error, null);
-
-    // Back to the start, then Step: the counter advances and the picture grows.
     await click(page, 'rewind');
     state = await waitForStudio(page, `state.step === ${state.animation?.first ?? 0}`);
     const first = await pictureCells(page);
@@ -78,43 +81,52 @@ const tests = {
     const stepped = await pictureCells(page);
     assert.ok(pictureDifference(first, stepped) > CHANGED, 'Step changes the picture');
     assert.match(await page.textContent('.readout.step'), new RegExp(`step ${state.step} /`));
-
-    // Run to the last frame.
     await click(page, 'run');
     state = await waitForStudio(page, 'state.finished || state.step >= (state.animation?.last ?? state.derivation_length)');
     const ran = await pictureCells(page);
     assertPlantDrawn(ran, 'after Run');
     assert.ok(pictureDifference(stepped, ran) > CHANGED, 'Run changes the picture');
     await screenshot(page, 'branching-after-run');
+  }],
 
-    // A slider re-runs the model with its value; the file stays as it is.
+  ['a slider changes the picture, not the file', 'branching2d', async ({ page, folder }) => {
+    const model = join(folder, 'branching.l');
     const text = readFileSync(model, 'utf8');
+    let state = await waitForStudio(page, 'state.scene_version > 0');
+    assert.ok(state.params.some((p) => p.define === 'ANGLE'), 'the ANGLE define is offered as a parameter');
+    const shown = await pictureCells(page);
     const slider = page.locator('.slider-param', { hasText: /Branching angle|ANGLE/ }).locator('input');
-    const sceneBefore = state.scene_version;
     await slider.evaluate((input) => {
       input.value = 70;
       input.dispatchEvent(new Event('input', { bubbles: true }));
     });
-    state = await waitForStudio(page, `state.scene_version > ${sceneBefore} && state.params.some((p) => p.modified)`);
-    const slid = await pictureCells(page);
-    assert.ok(pictureDifference(ran, slid) > CHANGED, 'the slider changes the picture');
+    state = await waitForStudio(page, `state.scene_version > ${state.scene_version} && state.params.some((p) => p.modified)`);
+    assert.ok(pictureDifference(shown, await pictureCells(page)) > CHANGED, 'the slider changes the picture');
     assert.equal(readFileSync(model, 'utf8'), text, 'the slider leaves the file as it is');
     assert.ok(await page.isEnabled('text=Write to files'));
     await screenshot(page, 'branching-slider-70');
     await page.click('.button-row >> text=Reset');
-    state = await waitForStudio(page, '!state.params_modified && state.params.every((p) => !p.modified)');
+    await waitForStudio(page, '!state.params_modified && state.params.every((p) => !p.modified)');
+  }],
 
-    // Saving an edit reloads the picture.
+  ['an edit reloads the picture; a translation error keeps it', 'branching2d', async ({ page, folder }) => {
+    const model = join(folder, 'branching.l');
+    const text = readFileSync(model, 'utf8');
+    let state = await waitForStudio(page, 'state.scene_version > 0');
+    await click(page, 'run');
+    state = await waitForStudio(page, 'state.finished');
     const shown = await pictureCells(page);
-    const sceneBeforeEdit = state.scene_version;
     writeFileSync(model, text.replace('#define ANGLE 30', '#define ANGLE 12'));
-    state = await waitForStudio(page, `state.scene_version > ${sceneBeforeEdit}`);
+    state = await waitForStudio(page, `state.scene_version > ${state.scene_version}`);
     assert.equal(state.error, null);
+    if (!state.finished) {
+      await click(page, 'run');
+      state = await waitForStudio(page, 'state.finished');
+    }
     const edited = await pictureCells(page);
     assert.ok(pictureDifference(shown, edited) > CHANGED, 'the edit changes the picture');
     await screenshot(page, 'branching-edited');
 
-    // A translation error: shown at file:line with its source line, the last picture kept.
     const broken = text.replace('F(x) : {', 'F(x) :: {');
     const errorLine = broken.split('\n').findIndex((line) => line.includes('F(x) ::')) + 1;
     writeFileSync(model, broken);
@@ -123,28 +135,27 @@ const tests = {
     const panel = await page.textContent('.error-panel');
     assert.ok(panel.includes(`branching.l:${errorLine}`), `the error panel names branching.l:${errorLine}: ${panel}`);
     assert.ok(panel.includes('F(x) :: {'), 'the error panel shows the source line');
-    const kept = await pictureCells(page);
-    assert.ok(pictureDifference(edited, kept) <= CHANGED, 'the last good picture stays');
+    assert.ok(pictureDifference(edited, await pictureCells(page)) <= CHANGED, 'the last good picture stays');
     await screenshot(page, 'branching-translation-error');
     writeFileSync(model, text);
-    state = await waitForStudio(page, 'state.error === null');
+    await waitForStudio(page, 'state.error === null');
     await page.waitForSelector('.error-panel', { state: 'hidden' });
+  }],
 
-    // Files outside the model's folder are refused.
+  ['files outside the model folder are refused', 'branching2d', async ({ studio, folder }) => {
     const base = new URL(studio.url);
     const get = async (path) => (await fetch(new URL(path, base), { redirect: 'manual' })).status;
     assert.equal(await get('/files/branching.l'), 200);
     writeFileSync(join(work, 'outside.txt'), 'not the model\'s');
     symlinkSync(join(work, 'outside.txt'), join(folder, 'outside-link.txt'));
-    for (const path of ['/files/../outside.txt', '/files/%2e%2e/outside.txt', '/files/..%2foutside.txt', '/files/outside-link.txt']) {
+    for (const path of ['/files/../outside.txt', '/files/%2e%2e/outside.txt', '/files/..%2foutside.txt',
+      '/files/outside-link.txt', '/files//etc/passwd']) {
       const status = await get(path);
       assert.ok(status === 403 || status === 404, `${path} is refused (${status})`);
     }
-    await close();
-  },
+  }],
 
-  async '3D picture and picking a module'() {
-    const { page, close } = await open('tree3d', ['tree.l', 'tree.v']);
+  ['3D picture and picking a module', 'tree3d', async ({ page }) => {
     await waitForStudio(page, 'state.scene_version > 0');
     await page.click('button[data-action="run"]');
     const state = await waitForStudio(page, 'state.finished || state.step >= state.derivation_length');
@@ -162,11 +173,9 @@ const tests = {
     await page.waitForSelector('.module-name');
     assert.equal(await page.textContent('.module-name'), 'F');
     await screenshot(page, 'tree3d-picked');
-    await close();
-  },
+  }],
 
-  async 'a crashing model is reported and a fixed save recovers'() {
-    const { folder, studio, page, close } = await open('crash', ['crash.l']);
+  ['a crashing model is reported and a fixed save recovers', 'crash', async ({ page, studio, folder }) => {
     await waitForStudio(page, 'state.scene_version > 0');
     await page.click('button[data-action="run"]');
     const state = await waitForStudio(page, 'state.error !== null', 90000);
@@ -182,21 +191,32 @@ const tests = {
     await waitForStudio(page, 'state.error === null && (state.finished || state.step >= state.derivation_length)');
     assertPlantDrawn(await pictureCells(page), 'after the fix');
     await screenshot(page, 'crash-fixed');
-    await close();
-  },
-};
+  }],
+];
 
 browser = await launchBrowser(options.chromium);
 let failed = 0;
-for (const [name, test] of Object.entries(tests)) {
+for (const [name, model, test] of tests) {
   if (options.only && !name.includes(options.only)) continue;
   const started = Date.now();
+  let opened = null;
   try {
-    await test();
+    opened = await open(model, MODELS[model]);
+    await test(opened);
+    assert.deepEqual(opened.problems, [], 'the page threw');
     console.log(`ok   ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
   } catch (error) {
     failed++;
-    console.log(`FAIL ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)\n${error.stack || error}`);
+    const seen = opened ? await opened.page.evaluate(() => {
+      const s = window.sylvaStudio;
+      return s && JSON.stringify({ step: s.state?.step, scene: s.state?.scene_version, shown: s.sceneVersion,
+        busy: s.state?.busy, animating: s.animating, error: s.state?.error?.message });
+    }).catch(() => null) : null;
+    if (opened) await screenshot(opened.page, 'failed').catch(() => {});
+    console.log(`FAIL ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)\n${error.stack || error}`
+      + `${seen ? `\n  page: ${seen}` : ''}${opened ? `\n  studio output:\n${opened.studio.output()}` : ''}`);
+  } finally {
+    await opened?.close();
   }
 }
 await browser.close();

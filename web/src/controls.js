@@ -56,6 +56,7 @@ export class LpfgControls {
     else if (drag.mode === 'pan') this.pan(dx, dy);
     else if (drag.mode === 'zoom') this.zoom(dy);
     else if (drag.mode === 'roll') this.roll(dx);
+    this.viewer.userMoved = true;
     this.viewer.updateCamera();
   }
 
@@ -72,6 +73,7 @@ export class LpfgControls {
     event.preventDefault();
     const lines = event.deltaMode === 1 ? 16 : 1;
     this.zoom(Math.max(-200, Math.min(200, event.deltaY * lines)) * 0.5);
+    this.viewer.userMoved = true;
     this.viewer.updateCamera();
   }
 

@@ -77,19 +77,12 @@ viewSelect.addEventListener('change', () => {
 });
 
 // Following the server's state.
-let cameraKey = null;
 store.onConnection = (connected) => status.setConnected(connected);
-store.subscribe((state) => {
+store.subscribe((state, previous) => {
   document.title = `${state.model || 'model'} — Sylva Studio`;
   brand.querySelector('.model-name').textContent = state.model || '';
   brand.title = state.folder ? `${state.folder}\n${(state.files || []).join(', ')}` : '';
-  if (state.view) {
-    // A new camera in the view file resets the view; anything else keeps the user's.
-    const v = state.view;
-    const key = JSON.stringify([v.perspective, v.eye, v.target, v.up, v.fov, v.ortho_half_height, v.two_d]);
-    viewer.setView(v, key !== cameraKey);
-    cameraKey = key;
-  }
+  if (state.view && JSON.stringify(state.view) !== JSON.stringify(previous?.view)) viewer.setView(state.view);
   const views = state.views || [];
   viewSelect.hidden = views.length < 2;
   if (views.length > 1 && viewSelect.options.length !== views.length) {

@@ -32,6 +32,9 @@ export class Viewer {
     this.cam = { eye: new THREE.Vector3(0, 0, 5), target: new THREE.Vector3(), up: new THREE.Vector3(0, 1, 0),
       perspective: true, fov: 45, halfHeight: 1 };
     this.home = null;
+    // Until the user moves the camera it follows the server's framing (which
+    // grows with the plant, as lpfg's does); afterwards it stays until Reset view.
+    this.userMoved = false;
     this.model = null;
     this.framesRendered = 0;
     this.onRender = () => {};
@@ -52,23 +55,24 @@ export class Viewer {
     this.updateCamera();
   }
 
-  // Background, lights and (when `resetCamera`) the camera from state.view.
-  setView(view, resetCamera) {
+  // Background, lights and the view file's camera from state.view; the camera
+  // moves there unless the user has moved it.
+  setView(view) {
     this.scene.background = rgb(view.background, [0, 0, 0]);
     this.setLights(view.lights, view.stationary_lights !== false);
-    this.home = {
-      eye: v3(view.eye, new THREE.Vector3(0, 0, 5)),
-      target: v3(view.target, new THREE.Vector3()),
-      up: v3(view.up, new THREE.Vector3(0, 1, 0)),
-      perspective: view.perspective !== false && !view.two_d,
-      fov: view.fov || 45,
-      halfHeight: view.ortho_half_height || 1,
-    };
-    if (resetCamera) this.resetView();
+    const eye = v3(view.eye, new THREE.Vector3(0, 0, 5));
+    const target = v3(view.target, new THREE.Vector3());
+    const fov = view.fov || 45;
+    // A flat model is shown orthographic, framed as the perspective view would frame it.
+    const halfHeight = view.ortho_half_height || eye.distanceTo(target) * Math.tan(THREE.MathUtils.degToRad(fov) / 2) || 1;
+    this.home = { eye, target, up: v3(view.up, new THREE.Vector3(0, 1, 0)),
+      perspective: view.perspective !== false && !view.two_d, fov, halfHeight };
+    if (!this.userMoved) this.resetView();
     else this.requestRender();
   }
 
   resetView() {
+    this.userMoved = false;
     if (!this.home) return;
     const h = this.home;
     Object.assign(this.cam, { eye: h.eye.clone(), target: h.target.clone(), up: h.up.clone(),
