@@ -22,7 +22,7 @@ export function errorPanel() {
           el('span.line-number', {}, error.line != null ? `${error.line} | ` : ''), error.source_line,
           error.column ? el('span.caret', {}, `\n${' '.repeat(String(error.line ?? '').length + 3 + Math.max(0, error.column - 1))}^`) : null)
         : null;
-      node.replaceChildren(
+      node.replaceChildren(...[
         el('div.error-head', {},
           el('span.error-kind', {}, KINDS[error.kind] || error.kind || 'Error'),
           where ? el('span.error-where', {}, where) : null,
@@ -30,7 +30,7 @@ export function errorPanel() {
         el('pre.error-message', {}, error.message || ''),
         source,
         el('div.dim.error-note', {}, 'Showing the last good picture. Save the file to try again.'),
-      );
+      ].filter(Boolean));
     },
   };
 }

@@ -22,7 +22,7 @@ export function exportMenu(viewer, viewId) {
     list.replaceChildren(
       el('button.menu-item', { type: 'button', onclick: snapshot, title: 'The view as shown, from the canvas' }, 'Snapshot PNG (view)'),
       el('hr'),
-      formats.map((f) => el('a.menu-item', {
+      ...formats.map((f) => el('a.menu-item', {
         href: `/api/export?${new URLSearchParams({ format: f, view: viewId(), width, height })}`,
         download: '', dataset: { format: f }, onclick: () => close(),
       }, LABELS[f] || f, el('span.dim', {}, ` .${f === 'string' ? 'str' : f}`))),
