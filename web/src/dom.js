@@ -24,21 +24,28 @@ export function formatCount(n) {
   return n == null ? '–' : Number(n).toLocaleString('en-US');
 }
 
-// The function runs `ms` after the last call; flush() runs a pending call now.
+// The function runs `ms` after the last of a burst of calls.
 export function debounce(fn, ms) {
   let timer = null;
-  let pending = null;
-  const run = () => {
-    timer = null;
-    const args = pending;
-    pending = null;
-    fn(...args);
-  };
-  const debounced = (...args) => {
-    pending = args;
+  return (...args) => {
     clearTimeout(timer);
-    timer = setTimeout(run, ms);
+    timer = setTimeout(() => fn(...args), ms);
   };
-  debounced.pending = () => timer !== null;
-  return debounced;
+}
+
+// Runs fn with the latest arguments at most once every `ms` (the first call
+// waits `ms` too): a dragged slider sends its value as it goes, not only when it stops.
+export function everyAtMost(fn, ms) {
+  let timer = null;
+  let latest = null;
+  const call = (...args) => {
+    latest = args;
+    if (timer !== null) return;
+    timer = setTimeout(() => {
+      timer = null;
+      fn(...latest);
+    }, ms);
+  };
+  call.pending = () => timer !== null;
+  return call;
 }

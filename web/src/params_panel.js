@@ -2,7 +2,7 @@
 // and toggle buttons. A change re-runs the model with the value (files are
 // untouched) until "Write to files".
 import { postJSON } from './api.js';
-import { debounce, el } from './dom.js';
+import { el, everyAtMost } from './dom.js';
 
 const SEND_DELAY_MS = 150;
 
@@ -74,7 +74,12 @@ export class ParamsPanel {
     const shown = el('span.param-value');
     const label = el('span.param-name', { title: param.define ? `#define ${param.define}` : '' }, param.name || param.define);
     const node = el('div.param.slider-param', { dataset: { id: param.id } }, el('div.param-head', {}, label, shown), input);
-    const send = debounce((value) => this.post('/api/param', { id: param.id, value }), SEND_DELAY_MS);
+    let sending = 0;
+    const send = everyAtMost(async (value) => {
+      sending++;
+      await this.post('/api/param', { id: param.id, value });
+      sending--;
+    }, SEND_DELAY_MS);
     let dragging = false;
     input.addEventListener('pointerdown', () => { dragging = true; });
     input.addEventListener('pointerup', () => { dragging = false; });
@@ -89,7 +94,7 @@ export class ParamsPanel {
         Object.assign(param, p);
         node.classList.toggle('modified', !!p.modified);
         // The user's value wins while it is being dragged or not yet sent.
-        if (dragging || send.pending()) return;
+        if (dragging || sending || send.pending()) return;
         input.value = p.value;
         shown.textContent = defineValue(p, p.value);
         shown.title = (p.scale || 1) === 1 ? '' : `slider ${p.value} / ${p.scale}`;

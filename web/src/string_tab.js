@@ -6,6 +6,9 @@ import { debounce, el, formatCount } from './dom.js';
 
 const ROW = 20;
 const PAGE = 500;
+// Browsers cap an element's height (~33 M px in Chromium, less elsewhere): past
+// this the scroll bar maps onto the rows proportionally.
+const MAX_HEIGHT = 8e6;
 
 export class StringTab {
   constructor(page, onPick) {
@@ -55,7 +58,7 @@ export class StringTab {
   refresh() {
     if (!this.stale) return this.draw();
     this.stale = false;
-    this.spacer.style.height = `${this.modules * ROW}px`;
+    this.setHeight();
     this.summary.textContent = `${formatCount(this.modules)} modules`;
     if (this.search.value) this.runSearch();
     this.draw();
@@ -71,7 +74,7 @@ export class StringTab {
       this.pages.set(number, answer.items);
       if (answer.modules !== this.modules) {
         this.modules = answer.modules;
-        this.spacer.style.height = `${this.modules * ROW}px`;
+        this.setHeight();
       }
       this.draw();
     } catch {
@@ -84,9 +87,22 @@ export class StringTab {
     return page ? page[index % PAGE] : undefined;
   }
 
+  setHeight() {
+    this.spacer.style.height = `${Math.min(this.modules * ROW, MAX_HEIGHT)}px`;
+  }
+
+  // How many list pixels one scroll pixel stands for (1 unless the list is very long).
+  scrollRatio() {
+    const view = this.scroller.clientHeight;
+    const total = this.modules * ROW;
+    const height = Math.min(total, MAX_HEIGHT);
+    return height > view ? Math.max(1, (total - view) / (height - view)) : 1;
+  }
+
   draw() {
     if (!this.visible) return;
-    const top = this.scroller.scrollTop;
+    const scrollTop = this.scroller.scrollTop;
+    const top = scrollTop * this.scrollRatio();
     const first = Math.max(0, Math.floor(top / ROW) - 5);
     const last = Math.min(this.modules, Math.ceil((top + this.scroller.clientHeight) / ROW) + 5);
     const matchSet = new Set(this.matches);
@@ -98,9 +114,8 @@ export class StringTab {
       if (matchSet.has(i)) classes.push('match');
       if (this.matches[this.current] === i) classes.push('current');
       if (i === this.selected) classes.push('selected');
-      const row = el(`div.${classes.join('.')}`, { style: `top:${i * ROW}px`, onclick: () => item && this.pick(item) },
-        el('span.row-index', {}, i), el('span.row-text', {}, item ? item.text : '…'));
-      rows.push(row);
+      rows.push(el(`div.${classes.join('.')}`, { style: `top:${scrollTop + i * ROW - top}px`, onclick: () => item && this.pick(item) },
+        el('span.row-index', {}, i), el('span.row-text', {}, item ? item.text : '…')));
     }
     this.rows.replaceChildren(...rows);
   }
@@ -144,7 +159,7 @@ export class StringTab {
     const n = this.matches.length;
     this.current = this.current < 0 ? (direction > 0 ? 0 : n - 1) : (this.current + direction + n) % n;
     const index = this.matches[this.current];
-    this.scroller.scrollTop = Math.max(0, index * ROW - this.scroller.clientHeight / 2);
+    this.scroller.scrollTop = Math.max(0, (index * ROW - this.scroller.clientHeight / 2) / this.scrollRatio());
     this.updateMatchLabel();
     this.draw();
   }
