@@ -36,9 +36,11 @@ try {
   await page.evaluate(() => fetch('/api/run', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{}' }));
   let state = await waitForStudio(page, 'state.finished || state.step >= state.derivation_length', 900000);
   const runToPicture = Date.now() - started;
+  const firstLoadMs = await page.evaluate(() => window.sylvaStudio.sceneLoadMs);
   const { triangles, lines } = await page.evaluate(() => window.sylvaStudio.viewer.renderer.info.render);
   console.log(`${basename(files[0])}: step ${state.step}, ${state.modules.toLocaleString('en-US')} modules, `
-    + `${triangles.toLocaleString('en-US')} triangles and ${lines.toLocaleString('en-US')} lines drawn; run to the end and show it: ${seconds(runToPicture)}`);
+    + `${triangles.toLocaleString('en-US')} triangles and ${lines.toLocaleString('en-US')} lines drawn; run to the end and show it: ${seconds(runToPicture)} `
+    + `(the page's fetch, parse and first frame: ${seconds(firstLoadMs)})`);
 
   // Orbit: left drags around the view's middle for the given time.
   const box = await page.locator('canvas.view').boundingBox();
@@ -62,15 +64,32 @@ try {
   console.log(`orbit: ${rendered} frames in ${seconds(elapsed)} = ${((1000 * rendered) / elapsed).toFixed(1)} frames/s `
     + `(${moves} mouse moves)`);
 
+  // One frame drawn to the end (readPixels waits for the GPU), the model still.
+  const frameMs = await page.evaluate(() => {
+    const { viewer } = window.sylvaStudio;
+    const gl = viewer.renderer.getContext();
+    const pixel = new Uint8Array(4);
+    const times = [];
+    for (let i = 0; i < 3; i++) {
+      const t = performance.now();
+      viewer.renderNow();
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      times.push(performance.now() - t);
+    }
+    return Math.min(...times);
+  });
+  console.log(`one frame, finished: ${frameMs.toFixed(1)} ms (best of 3)`);
+
   // Save to picture: the model file touched, until the new scene is on screen.
   const sceneBefore = state.scene_version;
   const now = new Date();
   started = Date.now();
   utimesSync(join(folder, basename(files[0])), now, now);
   state = await waitForStudio(page, `state.scene_version > ${sceneBefore}`, 900000);
-  console.log(`save to picture: ${seconds(Date.now() - started)} (now at step ${state.step}, `
-    + `${state.modules.toLocaleString('en-US')} modules)`);
-  await page.screenshot({ path: join(resolve(options.work), `${basename(folder)}.png`) });
+  const pageMs = await page.evaluate(() => window.sylvaStudio.sceneLoadMs);
+  console.log(`save to picture: ${seconds(Date.now() - started)}, of which the page's fetch, parse and first frame `
+    + `${seconds(pageMs)} (now at step ${state.step}, ${state.modules.toLocaleString('en-US')} modules)`);
+  await page.screenshot({ path: join(resolve(options.work), `${basename(folder)}.png`), timeout: 600000 });
 } finally {
   await browser.close();
   await studio.stop();

@@ -18,7 +18,6 @@ export function el(spec, props = {}, ...children) {
   return node;
 }
 
-export const $ = (selector, root = document) => root.querySelector(selector);
 
 export function formatCount(n) {
   return n == null ? '–' : Number(n).toLocaleString('en-US');

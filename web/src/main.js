@@ -105,6 +105,7 @@ window.sylvaStudio = {
   get state() { return store.state; },
   get stateVersion() { return store.state?.version ?? 0; },
   get sceneVersion() { return scenes.displayed; },
+  get sceneLoadMs() { return scenes.lastLoadMs; },
   get framesRendered() { return viewer.framesRendered; },
   get animating() { return animator.mode; },
   get camera() { return viewer.cam; },

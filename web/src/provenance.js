@@ -39,7 +39,6 @@ export function elementOfHit(hit) {
   const object = hit.object;
   if (object.isMesh) return hit.faceIndex;
   if (object.isLineSegments) return Math.floor(hit.index / 2);
-  if (object.isLine) return hit.index;
   return hit.index;
 }
 

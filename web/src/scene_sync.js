@@ -14,6 +14,7 @@ export class SceneSync {
     this.loading = false;
     this.waiters = [];
     this.lastError = null;
+    this.lastLoadMs = null; // fetch, parse and first frame of the last scene
   }
 
   want(version) {
@@ -57,7 +58,8 @@ export class SceneSync {
           }
           this.displayed = Math.max(answer?.version ?? target, target);
           this.lastError = null;
-          this.onDisplayed(this.displayed, performance.now() - started);
+          this.lastLoadMs = performance.now() - started;
+          this.onDisplayed(this.displayed, this.lastLoadMs);
           this.settle();
         } catch (error) {
           // Keep the last good scene; try again when the server has a newer one.

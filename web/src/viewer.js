@@ -37,7 +37,6 @@ export class Viewer {
     this.userMoved = false;
     this.model = null;
     this.framesRendered = 0;
-    this.onRender = () => {};
     this.frameRequested = false;
     this.frameWaiters = [];
     new ResizeObserver(() => this.resize()).observe(canvas);
@@ -181,7 +180,6 @@ export class Viewer {
     const waiters = this.frameWaiters;
     this.frameWaiters = [];
     for (const resolve of waiters) resolve();
-    this.onRender();
   }
 
   // Resolves once the next frame is drawn.
