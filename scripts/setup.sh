@@ -11,7 +11,13 @@ PACKAGES=(
   libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
   libgraphicsmagick1-dev                               # texture images (PNG, SGI .rgb ...)
   libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
+  libcpp-httplib-dev                                   # the studio's web server
+  chromium                                             # the studio's browser tests (headless)
 )
+# The studio's page is bundled with Node.js packages (web/package.json): Debian's
+# nodejs and npm unless the machine has them already.
+command -v node >/dev/null || PACKAGES+=(nodejs)
+command -v npm >/dev/null || PACKAGES+=(npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -22,4 +28,12 @@ if ((${#missing[@]})); then
   if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# three.js, esbuild and playwright-core, as package-lock.json pins them (again
+# whenever the lock file changes).
+cd "$(dirname "$0")/../web"
+if ! cmp -s package-lock.json node_modules/.installed-lock.json; then
+  npm ci --no-audit --no-fund --loglevel=error
+  cp package-lock.json node_modules/.installed-lock.json
 fi

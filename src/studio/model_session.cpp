@@ -147,26 +147,42 @@ void ModelSession::save_parameters() {
 json ModelSession::open_request() {
   std::lock_guard state(state_mutex_);
   // A file with changed parameters is opened as a copy with the values
-  // applied; the copy of the model still includes from the model's folder.
-  auto path_with_parameters = [&](const std::string& path) {
-    bool changed = false;
-    for (const Parameter& p : parameters_) changed |= p.modified() && p.target == path;
-    if (!changed || shadow_dir_.empty()) return path;
+  // applied. The copy of the model includes from the copies' folder first,
+  // then from the model's: a changed file the model includes (params.h) is
+  // taken from its copy, which needs the model copied too.
+  std::set<std::string> changed;
+  for (const Parameter& p : parameters_)
+    if (p.modified()) changed.insert(p.target);
+  std::error_code ec;
+  if (!shadow_dir_.empty()) {
+    fs::remove_all(shadow_dir_, ec);
+    fs::create_directories(shadow_dir_, ec);
+  }
+  auto copy_with_parameters = [&](const std::string& path) {
     WholeFile file = read_whole_file(path);
-    if (!file) return path;
+    if (shadow_dir_.empty() || !file) return path;
     std::string text = std::move(file.bytes);
     for (const Parameter& p : parameters_)
       if (p.modified() && p.target == path) text = apply_parameter(text, p);
     const std::string copy = (fs::path(shadow_dir_) / fs::path(path).filename()).string();
-    write_file_atomically(copy, text);
-    return copy;
+    return write_file_atomically(copy, text) == 0 ? copy : path;
   };
   json inputs = json::array();
+  bool copy_model = changed.count(model_) > 0;
+  for (const std::string& target : changed) {
+    const bool input = std::any_of(options_.inputs.begin(), options_.inputs.end(),
+                                   [&](const io::InputFile& i) { return i.path == target; });
+    if (target != model_ && !input) {
+      copy_with_parameters(target);
+      copy_model = true;
+    }
+  }
   for (const io::InputFile& input : options_.inputs)
-    inputs.push_back({{"path", path_with_parameters(input.path)}, {"kind", static_cast<int>(input.kind)},
+    inputs.push_back({{"path", changed.count(input.path) ? copy_with_parameters(input.path) : input.path},
+                      {"kind", static_cast<int>(input.kind)},
                       {"slot", input.slot}});
   return {{"op", "open"},
-          {"model", path_with_parameters(model_)},
+          {"model", copy_model ? copy_with_parameters(model_) : model_},
           {"inputs", inputs},
           {"defines", options_.defines},
           {"include_dirs", std::vector<std::string>{folder_}},

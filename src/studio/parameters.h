@@ -23,8 +23,12 @@ struct Parameter {
   int value = 0;        // what the slider shows now
   int file_value = 0;   // what the file says
   std::string message;  // the panel's message template ("d WIDTH %d 10")
+  bool ped = false;     // edited by ped (panel | ped FILE), not awkped
   std::string target;   // the file the message edits
   double scale = 1;     // what the define receives is value / scale
+  // A model's own define (no panel): its literal as written, whose kind
+  // (integer, floating, 'f' suffix) the new value keeps.
+  std::string define_literal;
   bool modified() const { return value != file_value; }
 };
 

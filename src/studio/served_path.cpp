@@ -1,21 +1,26 @@
 #include "studio/served_path.h"
 
+#include <algorithm>
+
 namespace sylva::studio {
 
-std::optional<std::filesystem::path> resolve_served_path(const std::filesystem::path& folder,
-                                                         const std::string& request_path) {
-  namespace fs = std::filesystem;
-  const fs::path relative(request_path);
-  if (relative.empty() || relative.is_absolute()) return std::nullopt;
-  for (const fs::path& part : relative)
-    if (part == "..") return std::nullopt;
-  std::error_code ec;
-  const fs::path root = fs::canonical(folder, ec);
-  if (ec) return std::nullopt;
-  const fs::path file = fs::canonical(root / relative, ec);
-  if (ec || !fs::is_regular_file(file, ec)) return std::nullopt;
-  const auto [end, _] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
-  if (end != root.end()) return std::nullopt;
+namespace fs = std::filesystem;
+
+std::optional<fs::path> served_path(const fs::path& folder, std::string_view request) {
+  if (request.empty() || request.find('\0') != std::string_view::npos) return std::nullopt;
+  const fs::path relative(request);
+  if (relative.is_absolute() || relative.has_root_path()) return std::nullopt;
+  if (std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; }))
+    return std::nullopt;
+
+  std::error_code error;
+  const fs::path root = fs::canonical(folder, error);
+  if (error) return std::nullopt;
+  const fs::path file = fs::canonical(root / relative, error);
+  if (error || !fs::is_regular_file(file, error)) return std::nullopt;
+  // Inside the folder: the root's components are a prefix of the file's.
+  const auto [stop, unused] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+  if (stop != root.end()) return std::nullopt;
   return file;
 }
 

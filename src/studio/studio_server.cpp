@@ -130,7 +130,7 @@ struct StudioServer::Impl {
 
     // The model folder's files, and nothing outside it.
     http.Get(R"(/files/(.+))", [this](const httplib::Request& req, httplib::Response& res) {
-      const std::optional<std::filesystem::path> path = resolve_served_path(session.folder(), req.matches[1]);
+      const std::optional<std::filesystem::path> path = served_path(session.folder(), req.matches[1].str());
       if (!path) return send_error(res, 403, "only the model's folder is served");
       WholeFile file = read_whole_file(path->string());
       if (!file) return send_error(res, 404, "cannot read " + req.matches[1].str());

@@ -1,0 +1,145 @@
+// A model in the studio, run by the real worker program: steps, errors
+// placed in the source, crashes survived, parameters applied to copies.
+#include "studio/model_session.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "test_support.h"
+
+namespace sylva::studio {
+namespace {
+
+using nlohmann::json;
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Each step adds BRANCHES modules B and one F: after n steps the string
+// holds 1 + n * (1 + BRANCHES) modules. At step CRASH_AT the production
+// writes through a null pointer.
+const char* kModel = R"(#include <lpfgall.h>
+#define BRANCHES 2
+#define CRASH_AT 99
+derivation length: 4;
+module A(int);
+module B;
+Axiom: A(0);
+production:
+A(n) : {
+  if (n + 1 == CRASH_AT) { volatile int* p = nullptr; *p = 1; }
+  nproduce F(1);
+  for (int i = 0; i < BRANCHES; ++i) nproduce B;
+  produce A(n + 1);
+}
+)";
+
+SessionOptions options_for(const std::string& model) {
+  SessionOptions o;
+  o.model = model;
+  o.cache_dir = SYLVA_TEST_CACHE_DIR;
+  o.worker_command = {SYLVA_BINARY, "studio-worker"};
+  o.time_limit_seconds = 60;
+  return o;
+}
+
+TEST(ModelSession, StepsRunAndRewinds) {
+  const std::string dir = test::make_temp_dir("session-steps");
+  write(dir + "/plant.l", kModel);
+  ModelSession session(options_for(dir + "/plant.l"));
+  session.reload();
+  json state = session.state_json();
+  ASSERT_TRUE(state["error"].is_null()) << state["error"].dump();
+  EXPECT_EQ(state["step"], 0);
+  EXPECT_EQ(state["modules"], 1);
+  EXPECT_EQ(state["derivation_length"], 4);
+  const std::uint64_t first_scene = session.scene().second;
+
+  session.step(1);
+  state = session.state_json();
+  EXPECT_EQ(state["step"], 1);
+  EXPECT_EQ(state["modules"], 1 + 3);
+  EXPECT_GT(session.scene().second, first_scene);
+
+  session.run_to(-1);
+  state = session.state_json();
+  EXPECT_EQ(state["step"], 4);
+  EXPECT_EQ(state["modules"], 1 + 4 * 3);
+  EXPECT_TRUE(state["finished"]);
+  session.step(1);  // nothing past the derivation length
+  EXPECT_EQ(session.state_json()["step"], 4);
+
+  session.rewind();
+  EXPECT_EQ(session.state_json()["step"], 0);
+  // A picture is binary glTF.
+  EXPECT_EQ(session.scene().first->substr(0, 4), "glTF");
+}
+
+TEST(ModelSession, ATranslationErrorIsPlacedInTheSourceAndThePictureStays) {
+  const std::string dir = test::make_temp_dir("session-error");
+  write(dir + "/plant.l", kModel);
+  ModelSession session(options_for(dir + "/plant.l"));
+  session.reload();
+  const std::uint64_t good = session.scene().second;
+  std::string broken = kModel;
+  broken.replace(broken.find("nproduce F(1);"), 14, "nproduce F;   ");
+  write(dir + "/plant.l", broken);
+  session.reload();
+  const json error = session.state_json()["error"];
+  ASSERT_FALSE(error.is_null());
+  EXPECT_EQ(error["file"], "plant.l");
+  EXPECT_EQ(error["line"], 11);
+  EXPECT_EQ(error["source_line"], "  nproduce F;   ");
+  EXPECT_EQ(session.scene().second, good);
+  ASSERT_TRUE(session.scene().first);
+}
+
+TEST(ModelSession, ACrashIsReportedAndTheNextSaveRecovers) {
+  const std::string dir = test::make_temp_dir("session-crash");
+  std::string crashing = kModel;
+  crashing.replace(crashing.find("CRASH_AT 99"), 11, "CRASH_AT 2 ");
+  write(dir + "/plant.l", crashing);
+  ModelSession session(options_for(dir + "/plant.l"));
+  session.reload();
+  session.step(1);
+  session.step(1);
+  json state = session.state_json();
+  ASSERT_FALSE(state["error"].is_null());
+  EXPECT_EQ(state["error"]["kind"], "crash");
+  EXPECT_EQ(state["error"]["step"], 2);
+  EXPECT_EQ(state["step"], 1);  // the last good state stays on show
+
+  write(dir + "/plant.l", kModel);
+  session.reload();
+  state = session.state_json();
+  EXPECT_TRUE(state["error"].is_null()) << state["error"].dump();
+  EXPECT_EQ(state["step"], 1);  // derived back to the last good step
+  session.step(2);
+  EXPECT_EQ(session.state_json()["step"], 3);
+}
+
+TEST(ModelSession, AParameterChangesTheRunNotTheFile) {
+  const std::string dir = test::make_temp_dir("session-param");
+  write(dir + "/plant.l", kModel);
+  ModelSession session(options_for(dir + "/plant.l"));
+  session.reload();
+  session.run_to(2);
+  json state = session.state_json();
+  ASSERT_EQ(state["params"][0]["define"], "BRANCHES");
+  session.set_parameter("p0", 5);
+  state = session.state_json();
+  EXPECT_TRUE(state["error"].is_null()) << state["error"].dump();
+  EXPECT_EQ(state["step"], 2);                 // derived back to where it was
+  EXPECT_EQ(state["modules"], 1 + 2 * 6);      // with five branches a step
+  EXPECT_TRUE(state["params_modified"]);
+  EXPECT_EQ(test::read_text(dir + "/plant.l"), kModel);
+
+  session.save_parameters();
+  std::string saved = kModel;
+  saved.replace(saved.find("BRANCHES 2"), 10, "BRANCHES 5");
+  EXPECT_EQ(test::read_text(dir + "/plant.l"), saved);
+  EXPECT_FALSE(session.state_json()["params_modified"]);
+}
+
+}  // namespace
+}  // namespace sylva::studio
