@@ -94,6 +94,8 @@ const tests = [
     const text = readFileSync(model, 'utf8');
     let state = await waitForStudio(page, 'state.scene_version > 0');
     assert.ok(state.params.some((p) => p.define === 'ANGLE'), 'the ANGLE define is offered as a parameter');
+    await click(page, 'run');
+    state = await waitForStudio(page, 'state.finished');
     const shown = await pictureCells(page);
     const slider = page.locator('.slider-param', { hasText: /Branching angle|ANGLE/ }).locator('input');
     await slider.evaluate((input) => {
