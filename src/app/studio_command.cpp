@@ -50,6 +50,11 @@ CLI::App* add_studio_command(CLI::App& app, StudioOptions& o) {
       ->check(CLI::PositiveNumber);
   studio->add_option("--memory-limit", o.memory_limit_mb, "Megabytes of memory a model may use (default 8192)")
       ->check(CLI::Range(64, 1 << 30));
+  studio->add_option("--instances-above", o.instances_above,
+                     "Send a scene's spheres and cylinders to the page as instances when it has more than N "
+                     "(default 20000)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("N");
   return studio;
 }
 
@@ -66,6 +71,7 @@ int run_studio(const StudioOptions& o, const build::BuildOptions& build) {
   session_options.worker_command = {std::filesystem::read_symlink("/proc/self/exe").string(), kStudioWorkerCommand};
   session_options.limits.memory_bytes = static_cast<std::size_t>(o.memory_limit_mb) << 20;
   session_options.time_limit_seconds = o.time_limit_seconds;
+  session_options.instances_above = o.instances_above;
   signal(SIGPIPE, SIG_IGN);  // a page closed mid-answer, a worker gone mid-request
   studio::ModelSession session(session_options);
 

@@ -20,6 +20,7 @@ struct StudioOptions {
   std::string listen;  // an address other than loopback: a token is required
   double time_limit_seconds = 60;
   int memory_limit_mb = 8192;
+  int instances_above = 20000;
 };
 
 CLI::App* add_studio_command(CLI::App& app, StudioOptions& options);

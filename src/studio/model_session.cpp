@@ -249,7 +249,8 @@ void ModelSession::take_status(const json& status) {
 
 void ModelSession::fetch_scene() {
   WorkerMessage answer;
-  if (!call({{"op", "scene"}, {"view", status_.value("primary_view", 0)}}, options_.time_limit_seconds, &answer))
+  if (!call({{"op", "scene"}, {"view", status_.value("primary_view", 0)}, {"instances_above", options_.instances_above}},
+            options_.time_limit_seconds, &answer))
     return;
   std::lock_guard state(state_mutex_);
   const std::size_t glb_size = std::min(answer.payload.size(), answer.json.value("glb_size", answer.payload.size()));

@@ -29,6 +29,7 @@ struct SessionOptions {
   WorkerLimits limits;
   double time_limit_seconds = 60;       // per request that derives
   double compile_limit_seconds = 600;   // opening a model: translating and compiling
+  int instances_above = 20000;          // scene_instances.h
 };
 
 class ModelSession {

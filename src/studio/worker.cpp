@@ -106,8 +106,9 @@ class Worker {
       restart();
       return status();
     }
-    if (op == "scene") return scene(request.value("view", 0), request.value("width", 800),
-                                    request.value("height", 800));
+    if (op == "scene")
+      return scene(request.value("view", 0), request.value("width", 800), request.value("height", 800),
+                   request.value("instances_above", 20000));
     if (op == "string") return string_page(request);
     if (op == "counts") return counts();
     if (op == "module") return module(request.value("view", 0), request.value("index", 0));
@@ -175,14 +176,15 @@ class Worker {
 
   // The picture: binary glTF, then the instances of a big scene's spheres
   // and cylinders (scene_instances.h), "glb_size" telling where one ends.
-  WorkerMessage scene(int view, int width, int height) {
+  WorkerMessage scene(int view, int width, int height, int instances_above) {
     geometry::Scene scene = simulation_->scene(view);
     WorkerMessage out = status();
     out.json["view"] = camera_json(*simulation_, scene, view, width, height);
     static const io::ViewFile defaults;
     const io::ViewFile& view_file = simulation_->inputs().view ? *simulation_->inputs().view : defaults;
     const std::string instances =
-        take_instances(scene, simulation_->inputs().palette, view_file.tessellation_options());
+        take_instances(scene, simulation_->inputs().palette, view_file.tessellation_options(),
+                       static_cast<std::size_t>(std::max(0, instances_above)));
     out.payload = scene_glb(scene, *simulation_);
     out.json["glb_size"] = out.payload.size();
     out.payload += instances;
@@ -245,8 +247,21 @@ class Worker {
     const ModuleId id = v.id_at(at);
     std::string params;
     if (types[id].param_size > 0) types.format_params(id, module_params(v.data, at), params);
+    // As the string writes them (floats with the digits that read back),
+    // split at the commas between parameters, not those inside a struct's
+    // braces or a vector's parentheses.
     json parameters = json::array();
-    for (double x : types.numbers(id, module_params(v.data, at))) parameters.push_back(x);
+    int depth = 0;
+    std::string parameter;
+    for (char c : params) {
+      depth += (c == '{' || c == '(') - (c == '}' || c == ')');
+      if (c == ',' && depth == 0) {
+        parameters.push_back(std::exchange(parameter, {}));
+      } else {
+        parameter += c;
+      }
+    }
+    if (!params.empty()) parameters.push_back(parameter);
     // Without interpretation rules the interpreted string is the string, so
     // the index is also the module's place in it.
     const bool same = interpreted.size_bytes() == simulation_->string().size_bytes() &&
@@ -257,7 +272,6 @@ class Worker {
              {"name", types.name(id)},
              {"text", module_text(types, v, at)},
              {"parameters", parameters},
-             {"parameter_text", params},
              {"step", nullptr},
              {"string_index", same ? json(index) : json(nullptr)}},
             {}};

@@ -6,11 +6,12 @@
 //
 // Requests (worker_protocol.h messages, "op" naming each):
 //   open    {model, inputs: [{path, kind, slot}], defines: [..], include_dirs: [..],
-//            cache_dir, compiler, language, source_name}  -> status
+//            cache_dir, compiler, language}  -> status, animation, views
 //   step    {count}      derives up to `count` steps, not past the derivation length -> status
 //   run     {to}         derives to step `to` (-1: the derivation length) -> status
 //   rewind  {}           back to the axiom (step 0) -> status
-//   scene   {view}       -> the picture as binary glTF (payload) and its camera ("view")
+//   scene   {view, instances_above} -> the picture (payload): binary glTF ("glb_size"
+//            bytes), then a big scene's instances (scene_instances.h); its camera ("view")
 //   string  {offset, limit, search}, counts {}, module {view, index}
 //   export  {format, view, width, height} -> the file's bytes (payload)
 // Every answer has "ok"; a failed one has "error": {message, file, line, column}.

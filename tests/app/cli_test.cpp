@@ -175,7 +175,7 @@ const std::vector<BadCommandLine> kBadCommandLines = {
     {"UnknownOptionAlone", {"--bogus"}, "sylva: error: ", "--bogus"},
     // A mistyped command is named, not reported as a missing one.
     {"MistypedCommand", {"runn", "model.l"}, "sylva: error: ", "runn"},
-    {"NoCommand", {}, "sylva: error: ", "run or translate"},
+    {"NoCommand", {}, "sylva: error: ", "run, studio or translate"},
     {"NegativeStepCount", {"run", "model.l", "--string", "out.txt", "--steps", "-3"}, "sylva: error: --steps: ",
      "expected a number of steps (0 or more), not '-3'"},
     {"StepCountNotANumber", {"run", "model.l", "--string", "out.txt", "--steps", "x"}, "sylva: error: --steps: ",

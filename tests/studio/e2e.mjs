@@ -26,7 +26,7 @@ let shot = 0;
 
 // Opens the studio on a fresh copy of models/NAME and the page on it.
 async function open(name, files) {
-  const folder = copyModel(join(modelsDir, name), work, name);
+  const folder = copyModel(join(modelsDir, name.split('+')[0]), work, name.replace('+', '-'));
   const studio = await startStudio(sylva, files, { cwd: folder, env: { SYLVA_CACHE_DIR: cacheDir } });
   const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
   const problems = [];
@@ -60,9 +60,12 @@ async function click(page, action) {
 }
 
 // Each test's model (a folder of models/) and the files the studio opens.
+// The command line of each model; its folder under models/ is the name up to a '+'.
 const MODELS = {
   branching2d: ['branching.l', 'branching.v'],
   tree3d: ['tree.l', 'tree.v'],
+  // Its spheres and cylinders sent as instances, as a big plant's are.
+  'tree3d+instanced': ['tree.l', 'tree.v', '--instances-above', '0'],
   crash: ['crash.l'],
 };
 
@@ -175,6 +178,27 @@ const tests = [
     await page.waitForSelector('.module-name');
     assert.equal(await page.textContent('.module-name'), 'F');
     await screenshot(page, 'tree3d-picked');
+  }],
+
+  ['a big scene as instances: drawn, picked', 'tree3d+instanced', async ({ page }) => {
+    await waitForStudio(page, 'state.scene_version > 0');
+    await page.click('button[data-action="run"]');
+    const state = await waitForStudio(page, 'state.finished || state.step >= state.derivation_length');
+    assert.equal(state.instances, true, 'the scene came as instances');
+    await page.waitForFunction(() => window.sylvaStudio.sceneVersion >= window.sylvaStudio.state.scene_version);
+    const picture = await pictureCells(page, 64, 64);
+    assertPlantDrawn(picture, 'instanced 3D tree');
+    await screenshot(page, 'tree3d-instanced');
+    // The trunk, as in the test above: an instanced cylinder of module F.
+    const box = await page.locator('canvas.view').boundingBox();
+    const column = 32;
+    let row = 63;
+    while (row > 0 && picture.cells[row * 64 + column] + picture.cells[row * 64 + column - 1] === 0) row--;
+    row -= 2;
+    await page.mouse.click(box.x + (box.width * column) / 64 - 1, box.y + (box.height * (row + 0.5)) / 64);
+    await page.waitForSelector('.module-name');
+    assert.equal(await page.textContent('.module-name'), 'F');
+    await screenshot(page, 'tree3d-instanced-picked');
   }],
 
   ['a crashing model is reported and a fixed save recovers', 'crash', async ({ page, studio, folder }) => {

@@ -60,6 +60,17 @@ TEST(ModelSession, StepsRunAndRewinds) {
   EXPECT_EQ(state["step"], 1);
   EXPECT_EQ(state["modules"], 1 + 3);
   EXPECT_GT(session.scene().second, first_scene);
+  // The string is F(1) B B A(1); without interpretation rules the picture's
+  // numbering is the string's.
+  const WorkerMessage module = session.ask({{"op", "module"}, {"view", 0}, {"index", 3}});
+  EXPECT_EQ(module.json["text"], "A(1)");
+  EXPECT_EQ(module.json["parameters"], json::array({"1"}));
+  EXPECT_EQ(module.json["string_index"], 3);
+  const WorkerMessage counts = session.ask({{"op", "counts"}});
+  EXPECT_EQ(counts.json["counts"][0], json({{"name", "B"}, {"count", 2}}));
+  const WorkerMessage found = session.ask({{"op", "string"}, {"offset", 0}, {"limit", 2}, {"search", "B"}});
+  EXPECT_EQ(found.json["items"].size(), 2u);
+  EXPECT_EQ(found.json["matches"], json::array({1, 2}));
 
   session.run_to(-1);
   state = session.state_json();

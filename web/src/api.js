@@ -27,6 +27,15 @@ export async function postJSON(path, body) {
   }));
 }
 
+// The instances of a big picture's spheres and cylinders (src/studio/scene_instances.h):
+// an ArrayBuffer, or null when the picture has none.
+export async function getInstances(viewId) {
+  const response = await fetch(`/api/scene-instances.bin?view=${viewId}`, { cache: 'no-store' });
+  if (response.status === 204) return null;
+  if (!response.ok) throw new Error(`scene instances: ${response.status} ${response.statusText}`);
+  return response.arrayBuffer();
+}
+
 // The binary glTF of the current picture: {buffer, version}, or null when there is none yet.
 export async function getScene(viewId) {
   const response = await fetch(`/api/scene.glb?view=${viewId}`, { cache: 'no-store' });

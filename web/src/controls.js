@@ -28,7 +28,10 @@ export class LpfgControls {
     canvas.addEventListener('pointerdown', (e) => this.down(e));
     canvas.addEventListener('pointermove', (e) => this.move(e));
     canvas.addEventListener('pointerup', (e) => this.up(e));
-    canvas.addEventListener('pointercancel', () => { this.drag = null; });
+    canvas.addEventListener('pointercancel', () => {
+      this.drag = null;
+      this.viewer.setMoving(false);
+    });
     canvas.addEventListener('wheel', (e) => this.wheel(e), { passive: false });
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
     // The middle button would start the browser's autoscroll.
@@ -52,6 +55,7 @@ export class LpfgControls {
     drag.y = event.clientY;
     if (!drag.moved && Math.hypot(event.clientX - drag.startX, event.clientY - drag.startY) < CLICK_SLOP) return;
     drag.moved = true;
+    this.viewer.setMoving(true);
     if (drag.mode === 'rotate') this.rotate(dx, dy);
     else if (drag.mode === 'pan') this.pan(dx, dy);
     else if (drag.mode === 'zoom') this.zoom(dy);
@@ -63,6 +67,7 @@ export class LpfgControls {
   up(event) {
     const drag = this.drag;
     this.drag = null;
+    this.viewer.setMoving(false);
     if (drag && !drag.moved && drag.mode === 'rotate' && event.button === 0) {
       const rect = this.viewer.canvas.getBoundingClientRect();
       this.onClick(event.clientX - rect.left, event.clientY - rect.top);
@@ -74,6 +79,10 @@ export class LpfgControls {
     const lines = event.deltaMode === 1 ? 16 : 1;
     this.zoom(Math.max(-200, Math.min(200, event.deltaY * lines)) * 0.5);
     this.viewer.userMoved = true;
+    // Wheel turns come in bursts: the whole picture once they stop.
+    this.viewer.setMoving(true);
+    clearTimeout(this.wheelStill);
+    this.wheelStill = setTimeout(() => this.viewer.setMoving(false), 250);
     this.viewer.updateCamera();
   }
 

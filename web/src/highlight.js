@@ -23,7 +23,17 @@ export class Highlight {
 
   show(ranges) {
     this.viewer.overlay.clear();
-    for (const { primitive, first, count } of ranges) {
+    for (const { primitive, first, count, instance } of ranges) {
+      if (instance !== undefined) {
+        // One instance: its shape where the instance is.
+        const mark = new THREE.Mesh(primitive.geometry, this.meshMaterial);
+        mark.matrixAutoUpdate = false;
+        primitive.getMatrixAt(instance, mark.matrix);
+        mark.matrix.premultiply(primitive.matrixWorld);
+        mark.renderOrder = 10;
+        this.viewer.overlay.add(mark);
+        continue;
+      }
       const source = primitive.geometry;
       const geometry = new THREE.BufferGeometry();
       for (const [name, attribute] of Object.entries(source.attributes)) geometry.setAttribute(name, attribute);

@@ -29,6 +29,10 @@ export class Inspector {
       this.clear();
       return;
     }
+    if (hit.object.isInstancedMesh) {
+      await this.showModule(hit.object.userData.moduleIndices[hit.instanceId], { fromPick: true });
+      return;
+    }
     const records = await recordsOf(model, hit.object);
     const record = records && recordOfElement(records, elementOfHit(hit));
     if (!record) {

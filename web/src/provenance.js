@@ -48,10 +48,17 @@ export function elementSize(primitive) {
   return 1;
 }
 
-// Every range of elements, over all primitives, that module `index` made.
+// Every range of elements, over all primitives, that module `index` made; an
+// instance of an instanced primitive is a range of its own ({primitive, instance}).
 export async function rangesOfModule(model, index) {
   const ranges = [];
   for (const primitive of model.primitives) {
+    if (primitive.isInstancedMesh) {
+      const indices = primitive.userData.moduleIndices;
+      for (let i = 0; i < indices.length; ++i)
+        if (indices[i] === index) ranges.push({ primitive, instance: i, first: i, count: 1 });
+      continue;
+    }
     const records = await recordsOf(model, primitive);
     if (!records) continue;
     for (let at = 0; at < records.length; at += RECORD) {

@@ -3,6 +3,7 @@
 // plain coloured lines. Colours stay the sRGB values lpfg puts on screen.
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { parseInstances } from './instances.js';
 
 const loader = new GLTFLoader();
 
@@ -31,13 +32,22 @@ function lpfgMaterial(source, isLine) {
   });
 }
 
-// {root: Object3D, parser, bounds: Sphere, primitives: [Mesh|LineSegments]}
-export async function parseScene(buffer) {
+// {root: Object3D, parser, bounds: Sphere, primitives: [Mesh|LineSegments|InstancedMesh]}
+// `instances`: the big scene's instanced spheres and cylinders, or null.
+export async function parseScene(buffer, instances = null) {
   const gltf = await loader.parseAsync(buffer, '');
   const root = gltf.scene;
   const primitives = [];
+  let instanced = null;
+  if (instances) {
+    instanced = parseInstances(instances);
+    root.add(instanced, instanced.userData.proxy);
+    primitives.push(...instanced.children);
+  }
+  const proxy = instanced?.userData.proxy;
   root.traverse((object) => {
-    if (!object.isMesh && !object.isLine && !object.isPoints) return;
+    if (object.isInstancedMesh || object.parent === proxy || (!object.isMesh && !object.isLine && !object.isPoints))
+      return;
     const old = object.material;
     object.material = lpfgMaterial(old, object.isLine || object.isPoints);
     old.dispose();
@@ -47,7 +57,7 @@ export async function parseScene(buffer) {
   root.updateMatrixWorld(true);
   const box = new THREE.Box3().setFromObject(root);
   const bounds = box.isEmpty() ? new THREE.Sphere(new THREE.Vector3(), 1) : box.getBoundingSphere(new THREE.Sphere());
-  return { root, parser: gltf.parser, bounds, primitives };
+  return { root, parser: gltf.parser, bounds, primitives, instanced };
 }
 
 export function disposeScene(scene) {

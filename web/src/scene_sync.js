@@ -1,7 +1,7 @@
 // Keeps the view showing the server's newest scene: loads /api/scene.glb when
 // scene_version grows (one load at a time, the last good scene staying up
 // meanwhile and when a load fails) and tells waiters when a version is on screen.
-import { getScene } from './api.js';
+import { getInstances, getScene } from './api.js';
 import { parseScene } from './scene_loader.js';
 
 export class SceneSync {
@@ -52,7 +52,8 @@ export class SceneSync {
         try {
           const answer = await getScene(this.viewId());
           if (answer) {
-            const model = await parseScene(answer.buffer);
+            const instances = await getInstances(this.viewId());
+            const model = await parseScene(answer.buffer, instances);
             this.viewer.setModel(model);
             await this.viewer.nextFrame();
           }

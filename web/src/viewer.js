@@ -1,6 +1,7 @@
 // The 3D view: renderer, camera from the view file, lights, and rendering on
 // demand (a frame only when the camera, the scene or the canvas size changes).
 import * as THREE from 'three';
+import { showProxy } from './instances.js';
 import { disposeScene } from './scene_loader.js';
 
 // Colours are lpfg's sRGB values, shaded and shown as they are (as OpenGL does).
@@ -123,10 +124,22 @@ export class Viewer {
     this.requestRender();
   }
 
+  // While the camera moves, a big scene's instances are drawn as their proxy
+  // (instances.js); the whole picture when it stops.
+  setMoving(moving) {
+    if (moving === this.moving) return;
+    this.moving = moving;
+    if (this.model?.instanced) {
+      showProxy(this.model.instanced, moving);
+      this.requestRender();
+    }
+  }
+
   // Replaces the model's objects (the old ones are freed).
   setModel(model) {
     const old = this.model;
     this.model = model;
+    if (model?.instanced) showProxy(model.instanced, Boolean(this.moving));
     if (model) this.scene.add(model.root);
     disposeScene(old);
     this.updateCamera();
