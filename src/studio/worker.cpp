@@ -27,6 +27,16 @@ using nlohmann::json;
 json vec(geometry::Vec3 v) { return json::array({v.x, v.y, v.z}); }
 json rgb(geometry::Rgb c) { return json::array({c.r, c.g, c.b}); }
 
+const char* render_mode_name(geometry::RenderMode mode) {
+  switch (mode) {
+    case geometry::RenderMode::Wireframe: return "wireframe";
+    case geometry::RenderMode::Shaded: return "shaded";
+    case geometry::RenderMode::Shadows: return "shadows";
+    case geometry::RenderMode::Filled: break;
+  }
+  return "filled";
+}
+
 // The camera the PNG renderer would use for this scene, in terms a viewer
 // with an ordinary perspective or orthographic camera can take.
 json camera_json(const Simulation& simulation, const geometry::Scene& scene, int view_id, int width, int height) {
@@ -47,6 +57,8 @@ json camera_json(const Simulation& simulation, const geometry::Scene& scene, int
       {"far", camera.far_plane()},
       {"background", rgb(simulation.inputs().palette.background())},
       {"line_width", view.render.wireframe_line_width},
+      {"render_mode", render_mode_name(view.render.mode)},
+      {"stationary_lights", view.render.stationary_lights},
       {"bounds", {vec(bounds.min), vec(bounds.max)}},
   };
   if (camera.perspective()) out["fov"] = 2 * std::atan(1 / p[5]) * 180 / M_PI;

@@ -5,6 +5,7 @@
 // its mean radius by its matrix, each end's radius (relative to the mean)
 // from a per-instance attribute.
 import * as THREE from 'three';
+import { surfaceMaterial } from './materials.js';
 
 const MAGIC = 0x494c5953; // "SYLI"
 const SPHERE = 0;
@@ -21,15 +22,15 @@ function unitCylinder(sides) {
 }
 
 // The frustum's radius along the cylinder: r0 at y = 0, r1 at y = 1.
-function frustumMaterial(parameters) {
-  const material = new THREE.MeshLambertMaterial(parameters);
+function frustumMaterial(renderMode, parameters) {
+  const material = surfaceMaterial(renderMode, parameters);
   material.onBeforeCompile = (shader) => {
     shader.vertexShader = shader.vertexShader
       .replace('#include <common>', '#include <common>\nattribute vec2 radii;')
       .replace('#include <begin_vertex>',
         '#include <begin_vertex>\ntransformed.xz *= mix(radii.x, radii.y, position.y);');
   };
-  material.customProgramCacheKey = () => 'sylva-frustum';
+  material.customProgramCacheKey = () => `sylva-frustum-${renderMode}`;
   return material;
 }
 
@@ -60,7 +61,7 @@ function proxyOf(shape, values, count, color) {
 // The instances in `buffer` (an ArrayBuffer) as a Group of InstancedMesh, each
 // with userData.moduleIndices / moduleIds (Uint32Array, by instance id), and
 // the group's userData.proxy (a Group, hidden) to draw while the camera moves.
-export function parseInstances(buffer) {
+export function parseInstances(buffer, renderMode = 'shaded') {
   const u32 = new Uint32Array(buffer);
   const f32 = new Float32Array(buffer);
   if (u32.length < 3 || u32[0] !== MAGIC) throw new Error('not a Sylva instances file');
@@ -87,7 +88,7 @@ export function parseInstances(buffer) {
     const parameters = { color, side: THREE.DoubleSide, transparent: opacity < 1, opacity };
     let mesh;
     if (shape === SPHERE) {
-      mesh = new THREE.InstancedMesh(unitSphere(slices), new THREE.MeshLambertMaterial(parameters), count);
+      mesh = new THREE.InstancedMesh(unitSphere(slices), surfaceMaterial(renderMode, parameters), count);
       for (let i = 0; i < count; ++i) {
         const r = values[i * 4 + 3];
         matrix.makeScale(r, r, r).setPosition(values[i * 4], values[i * 4 + 1], values[i * 4 + 2]);
@@ -96,7 +97,7 @@ export function parseInstances(buffer) {
     } else if (shape === CYLINDER) {
       const geometry = unitCylinder(slices);
       const radii = new Float32Array(count * 2);
-      mesh = new THREE.InstancedMesh(geometry, frustumMaterial(parameters), count);
+      mesh = new THREE.InstancedMesh(geometry, frustumMaterial(renderMode, parameters), count);
       for (let i = 0; i < count; ++i) {
         const v = i * 8;
         position.set(values[v], values[v + 1], values[v + 2]);

@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { parseInstances } from './instances.js';
+import { surfaceMaterial } from './materials.js';
 
 const loader = new GLTFLoader();
 
@@ -11,7 +12,7 @@ function srgbColor(linearColor) {
   return linearColor.clone().convertLinearToSRGB();
 }
 
-function lpfgMaterial(source, isLine) {
+function lpfgMaterial(source, isLine, renderMode) {
   const color = source.color ? srgbColor(source.color) : new THREE.Color(1, 1, 1);
   const common = {
     color,
@@ -23,7 +24,7 @@ function lpfgMaterial(source, isLine) {
   const map = source.map;
   // Texels are used as they are stored, as OpenGL's modulate does.
   if (map) map.colorSpace = THREE.NoColorSpace;
-  return new THREE.MeshLambertMaterial({
+  return surfaceMaterial(renderMode, {
     ...common,
     map,
     side: THREE.DoubleSide,
@@ -33,14 +34,15 @@ function lpfgMaterial(source, isLine) {
 }
 
 // {root: Object3D, parser, bounds: Sphere, primitives: [Mesh|LineSegments|InstancedMesh]}
-// `instances`: the big scene's instanced spheres and cylinders, or null.
-export async function parseScene(buffer, instances = null) {
+// `instances`: the big scene's instanced spheres and cylinders, or null;
+// `renderMode`: the view file's (state.view.render_mode).
+export async function parseScene(buffer, instances = null, renderMode = 'shaded') {
   const gltf = await loader.parseAsync(buffer, '');
   const root = gltf.scene;
   const primitives = [];
   let instanced = null;
   if (instances) {
-    instanced = parseInstances(instances);
+    instanced = parseInstances(instances, renderMode);
     root.add(instanced, instanced.userData.proxy);
     primitives.push(...instanced.children);
   }
@@ -49,7 +51,7 @@ export async function parseScene(buffer, instances = null) {
     if (object.isInstancedMesh || object.parent === proxy || (!object.isMesh && !object.isLine && !object.isPoints))
       return;
     const old = object.material;
-    object.material = lpfgMaterial(old, object.isLine || object.isPoints);
+    object.material = lpfgMaterial(old, object.isLine || object.isPoints, renderMode);
     old.dispose();
     object.matrixAutoUpdate = false;
     primitives.push(object);

@@ -53,7 +53,7 @@ export class SceneSync {
           const answer = await getScene(this.viewId());
           if (answer) {
             const instances = await getInstances(this.viewId());
-            const model = await parseScene(answer.buffer, instances);
+            const model = await parseScene(answer.buffer, instances, this.viewer.renderMode);
             this.viewer.setModel(model);
             await this.viewer.nextFrame();
           }

@@ -60,6 +60,8 @@ export class Viewer {
   setView(view) {
     this.scene.background = rgb(view.background, [0, 0, 0]);
     this.setLights(view.lights, view.stationary_lights !== false);
+    // lpfg lights only shaded models; filled ones show their flat colours.
+    this.renderMode = view.render_mode || 'shaded';
     const eye = v3(view.eye, new THREE.Vector3(0, 0, 5));
     const target = v3(view.target, new THREE.Vector3());
     const fov = view.fov || 45;
