@@ -93,7 +93,8 @@ int run_studio(const StudioOptions& o, const build::BuildOptions& build) {
   // The first picture, then one after every save, on threads of their own
   // so the page is served meanwhile.
   std::thread first([&session] { session.reload(); });
-  studio::FileWatcher watcher([&session] { return session.watched_files(); }, [&session] { session.reload(); });
+  studio::FileWatcher watcher([&session] { return session.watched_files(); },
+                              [&session] { session.reload_if_changed(); });
   server.serve();
   session.interrupt();
   first.join();

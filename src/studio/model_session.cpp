@@ -65,6 +65,25 @@ std::vector<std::string> ModelSession::watched_files() const {
 
 void ModelSession::reload() {
   std::lock_guard lock(worker_mutex_);
+  reload_locked();
+}
+
+void ModelSession::reload_if_changed() {
+  std::lock_guard lock(worker_mutex_);
+  if (files_signature() != opened_signature_) reload_locked();
+}
+
+std::string ModelSession::files_signature() const {
+  std::string signature;
+  std::error_code ec;
+  for (const std::string& path : watched_files()) {
+    const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
+    signature += path + ' ' + std::to_string(time) + ' ' + std::to_string(fs::file_size(path, ec)) + '\n';
+  }
+  return signature;
+}
+
+void ModelSession::reload_locked() {
   {
     std::lock_guard state(state_mutex_);
     // Panel files and the defines may have changed with the save; values
@@ -193,6 +212,7 @@ json ModelSession::open_request() {
 
 void ModelSession::open_and_derive(int to_step) {
   open_ = false;
+  opened_signature_ = files_signature();
   set_busy("compiling");
   WorkerMessage opened;
   if (call(open_request(), options_.compile_limit_seconds, &opened)) {
@@ -203,7 +223,7 @@ void ModelSession::open_and_derive(int to_step) {
       error_ = nullptr;
     }
     // Back to where the page was; a fresh start shows the first frame.
-    if (to_step < 0) to_step = model_info_["animation"].value("first", 0);
+    if (to_step < 0) to_step = opened.json["animation"].value("first", 0);
     set_busy("deriving");
     if (to_step == 0 || call({{"op", "run"}, {"to", to_step}}, options_.time_limit_seconds)) fetch_scene();
   }

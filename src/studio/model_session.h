@@ -47,6 +47,9 @@ class ModelSession {
   // Opens the model again (after a save) and derives it back to the step it
   // was at. A model that fails keeps the last good picture.
   void reload();
+  // A reload, unless every watched file is as it was when the model was
+  // last opened (a save the session made itself has been taken already).
+  void reload_if_changed();
   void step(int count);
   void run_to(int step);  // -1: the derivation length
   void rewind();
@@ -72,6 +75,9 @@ class ModelSession {
   WorkerMessage ask(const nlohmann::json& request);
 
  private:
+  void reload_locked();
+  // The watched files' modification times and sizes.
+  std::string files_signature() const;
   void open_and_derive(int to_step);
   // Runs `request` and takes its status; on failure sets the error. Returns
   // whether it succeeded.
@@ -93,6 +99,7 @@ class ModelSession {
   std::mutex worker_mutex_;  // one request at a time
   std::unique_ptr<WorkerProcess> worker_;
   bool open_ = false;
+  std::string opened_signature_;  // files_signature() when the model was last opened
 
   mutable std::mutex state_mutex_;
   std::vector<Parameter> parameters_;

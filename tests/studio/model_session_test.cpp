@@ -153,5 +153,21 @@ TEST(ModelSession, AParameterChangesTheRunNotTheFile) {
   EXPECT_FALSE(session.state_json()["params_modified"]);
 }
 
+TEST(ModelSession, AWatcherReloadsOnlyWhatChangedSinceTheLastOpen) {
+  const std::string dir = test::make_temp_dir("session-watch");
+  write(dir + "/plant.l", kModel);
+  ModelSession session(options_for(dir + "/plant.l"));
+  session.reload();
+  const std::uint64_t opened = session.scene().second;
+  session.reload_if_changed();  // nothing changed: no new picture
+  EXPECT_EQ(session.scene().second, opened);
+  std::string edited = kModel;
+  edited.replace(edited.find("BRANCHES 2"), 10, "BRANCHES 3");
+  write(dir + "/plant.l", edited);
+  session.reload_if_changed();
+  EXPECT_GT(session.scene().second, opened);
+  EXPECT_EQ(session.state_json()["params"][0]["value"], 3);
+}
+
 }  // namespace
 }  // namespace sylva::studio
