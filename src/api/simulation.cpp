@@ -275,6 +275,9 @@ const ModuleString& Simulation::string() const { return derivation_->string(); }
 
 std::string Simulation::string_text() const { return io::format_string(derivation_->string(), types()); }
 
+void Simulation::track_births(bool on) { derivation_->track_births(on); }
+const std::vector<std::uint32_t>& Simulation::birth_steps() const { return derivation_->births(); }
+
 ModuleString Simulation::interpreted(int view) {
   ModuleString result = derivation_->interpreted(view);
   act_on_requests(RequestSource::Rules);

@@ -125,6 +125,10 @@ class Simulation {
   const ModuleString& string() const;
   // As `sylva run --string` writes it.
   std::string string_text() const;
+  // The step that made each module of string(), by index (0: the axiom),
+  // when track_births(true) was called before the run began; else empty.
+  void track_births(bool on);
+  const std::vector<std::uint32_t>& birth_steps() const;
   // After view `view`'s interpretation rules (LPFG manual 7.3): what the
   // turtle draws in that view.
   ModuleString interpreted(int view);

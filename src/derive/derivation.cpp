@@ -162,11 +162,13 @@ void Derivation::make_axiom() {
   if (loaded_in_start_) return;  // LoadString in Start: that string, not the axiom
   if (initial_string_) {
     string_.assign(initial_string_->data(), initial_string_->size_bytes());
+    reset_births(0);
     return;
   }
   if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
   string_.clear();
   model_.axiom(string_.buffer());
+  reset_births(0);
   if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
 }
 
@@ -181,6 +183,7 @@ void Derivation::replace_string(ModuleString string) {
                      "LoadString may only be called in a control statement (Start, StartEach, EndEach, End), "
                      "not while rules are applied");
   string_ = std::move(string);
+  reset_births(static_cast<std::uint32_t>(steps_done_));
   if (axiom_pending_) loaded_in_start_ = true;
 }
 
@@ -200,6 +203,7 @@ void Derivation::apply_productions() {
     message(group_warning(model_, c.next_group, choice));
   if (choice == GroupChoice::OutOfRange) c.next_group = c.current_group;
   c.current_group = c.next_group;
+  rewrites_.clear();
   {
     PassGuard guard(passes_running_);
     if (choice == GroupChoice::Undeclared) next_.assign(string_.data(), string_.size_bytes());
@@ -217,6 +221,7 @@ void Derivation::apply_productions() {
   std::swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;
+  update_births(next_, static_cast<std::uint32_t>(steps_done_));
   decompose();
 }
 
@@ -229,10 +234,12 @@ void Derivation::decompose() {
   PassGuard guard(passes_running_);
   depth_warnings_.clear();  // warned once per pass, as lpfg does
   next_.clear();
+  rewrites_.clear();
   int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
   reset_lsystems();
   expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
   std::swap(string_, next_);
+  update_births(next_, static_cast<std::uint32_t>(steps_done_));
 }
 
 void Derivation::end() {
@@ -451,6 +458,7 @@ void Derivation::derive_forward() {
     if (cut) {
       // Cut drops itself and the rest of its branch; the closing EB stays.
       pos = find_unmatched_end(src, pos);
+      note_rewrite(start, pos, 0);
     } else {
       std::size_t consumed = 0;
       if (probe) {
@@ -459,7 +467,9 @@ void Derivation::derive_forward() {
         probe_out_.clear();
         before_module(abi::kNoModule);
       }
+      const std::size_t output_before = next_.size_bytes();
       if (apply_forward(RuleKind::Production, src, pos, next_, next_, true, &consumed)) {
+        note_rewrite(start, consumed, next_.size_bytes() - output_before);
         pos = consumed;
       } else {
         const std::size_t n = src.next(pos);
@@ -494,6 +504,7 @@ void Derivation::derive_backward() {
     }
     if (applied) {
       backward_out_.prepend(successor_.data(), successor_.size_bytes());
+      note_rewrite(consumed, pos, successor_.size_bytes());
       pos = consumed;
     } else {
       const std::size_t start = src.previous(pos);
@@ -502,6 +513,7 @@ void Derivation::derive_backward() {
     }
   }
   next_.assign(backward_out_.data() + backward_out_.begin(), backward_out_.size_bytes());
+  std::reverse(rewrites_.begin(), rewrites_.end());  // noted from the end
 }
 
 // ---- decomposition and interpretation -----------------------------------------
@@ -530,7 +542,9 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
     } else {
       successor.clear();
       if (apply_forward(kind, source, pos, successor, out, true, &consumed)) {
+        const std::size_t output_before = out.size_bytes();
         expand(kind, successor.view(types_), depth + 1, max_depth, out);
+        if (depth == 0 && kind == RuleKind::Decomposition) note_rewrite(pos, consumed, out.size_bytes() - output_before);
         pos = run = consumed;
         continue;
       }

@@ -109,7 +109,27 @@ class Derivation {
   // fills them whether or not a production reads them.
   void add_query_modules(const std::vector<ModuleId>& ids);
 
+  // The step that made each module of the string (0: the axiom), by its
+  // index, when asked for with track_births before start(): a module
+  // rewritten by a production, decomposed, or fired in a Gillespie step is
+  // made anew; one copied unchanged keeps its step; a loaded string is made
+  // at the step that loaded it. Empty when not tracked.
+  void track_births(bool on) { tracking_births_ = on; }
+  const std::vector<std::uint32_t>& births() const { return births_; }
+
  private:
+  // A stretch of the old string [source_begin, source_end) replaced by
+  // `output_bytes` bytes of the new one, in the order of the old string.
+  struct Rewrite {
+    std::size_t source_begin, source_end, output_bytes;
+  };
+  void note_rewrite(std::size_t source_begin, std::size_t source_end, std::size_t output_bytes) {
+    if (tracking_births_) rewrites_.push_back({source_begin, source_end, output_bytes});
+  }
+  // After a pass from `old` to string_: births of copied modules carried
+  // over, rewritten ones made at `step` (derive/births.cpp).
+  void update_births(const ModuleString& old, std::uint32_t step);
+  void reset_births(std::uint32_t step);
 
   abi::ControlState& control() const { return *model_.control; }
   // The group whose rules apply: lpfg's current group, or with cpfg's
@@ -158,6 +178,9 @@ class Derivation {
 
   ModuleString string_;
   ModuleString next_;
+  bool tracking_births_ = false;
+  std::vector<std::uint32_t> births_;  // by module index of string_
+  std::vector<Rewrite> rewrites_;      // of the pass running
   ModuleString successor_;  // backward derivation builds each successor here
   ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;

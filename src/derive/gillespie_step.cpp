@@ -51,6 +51,7 @@ void Derivation::derive_gillespie() {
   auto copy = [this](const unsigned char* bytes, std::size_t n) {
     if (n > 0) next_.append(bytes, n);
   };
+  note_rewrite(fired->begin, fired->end, fired->successor_end - fired->successor_begin);
   copy(src.data + src.begin, fired->begin - src.begin);
   copy(reactions_.successors() + fired->successor_begin, fired->successor_end - fired->successor_begin);
   copy(src.data + fired->end, src.end - fired->end);

@@ -123,7 +123,7 @@ class Worker {
                    request.value("instances_above", 20000));
     if (op == "string") return string_page(request);
     if (op == "counts") return counts();
-    if (op == "module") return module(request.value("view", 0), request.value("index", 0));
+    if (op == "module") return module(request.value("index", 0u));
     if (op == "export") return export_file(request);
     throw std::runtime_error("unknown request '" + op + "'");
   }
@@ -143,6 +143,7 @@ class Worker {
                                        input.value("slot", 1));
     simulation_ = std::make_unique<Simulation>(request.at("model").get<std::string>(), options,
                                                [](const std::string& text) { std::fputs(text.c_str(), stderr); });
+    simulation_->track_births(true);  // for the inspector's "made at step"
     simulation_->begin();
     WorkerMessage out = status();
     out.json["compiled_now"] = simulation_->compiled_now();
@@ -247,12 +248,11 @@ class Worker {
     return {{{"ok", true}, {"counts", list}}, {}};
   }
 
-  // The module at `index` of the string view `view` draws (the index the
-  // glTF provenance names).
-  WorkerMessage module(int view, std::size_t index) {
+  // Module `index` of the string: the index the glTF provenance gives for
+  // what it drew (through the view's interpretation rules, if any).
+  WorkerMessage module(std::size_t index) {
     const ModuleTypes& types = simulation_->types();
-    const ModuleString interpreted = simulation_->interpreted(view);
-    const StringView v = interpreted.view(types);
+    const StringView v = simulation_->string().view(types);
     std::size_t i = 0, at = v.begin;
     for (; at < v.end && i < index; at = v.next(at)) ++i;
     if (at >= v.end) throw std::runtime_error("no module at index " + std::to_string(index));
@@ -274,18 +274,14 @@ class Worker {
       }
     }
     if (!params.empty()) parameters.push_back(parameter);
-    // Without interpretation rules the interpreted string is the string, so
-    // the index is also the module's place in it.
-    const bool same = interpreted.size_bytes() == simulation_->string().size_bytes() &&
-                      std::equal(interpreted.data(), interpreted.data() + interpreted.size_bytes(),
-                                 simulation_->string().data());
+    const std::vector<std::uint32_t>& births = simulation_->birth_steps();
     return {{{"ok", true},
              {"index", index},
              {"name", types.name(id)},
              {"text", module_text(types, v, at)},
              {"parameters", parameters},
-             {"step", nullptr},
-             {"string_index", same ? json(index) : json(nullptr)}},
+             {"step", index < births.size() ? json(births[index]) : json(nullptr)},
+             {"string_index", index}},
             {}};
   }
 

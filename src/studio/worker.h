@@ -12,7 +12,7 @@
 //   rewind  {}           back to the axiom (step 0) -> status
 //   scene   {view, instances_above} -> the picture (payload): binary glTF ("glb_size"
 //            bytes), then a big scene's instances (scene_instances.h); its camera ("view")
-//   string  {offset, limit, search}, counts {}, module {view, index}
+//   string  {offset, limit, search}, counts {}, module {index}
 //   export  {format, view, width, height} -> the file's bytes (payload)
 // Every answer has "ok"; a failed one has "error": {message, file, line, column}.
 #pragma once

@@ -66,6 +66,7 @@ TEST(ModelSession, StepsRunAndRewinds) {
   EXPECT_EQ(module.json["text"], "A(1)");
   EXPECT_EQ(module.json["parameters"], json::array({"1"}));
   EXPECT_EQ(module.json["string_index"], 3);
+  EXPECT_EQ(module.json["step"], 1);  // A(1) was made by the first step
   const WorkerMessage counts = session.ask({{"op", "counts"}});
   EXPECT_EQ(counts.json["counts"][0], json({{"name", "B"}, {"count", 2}}));
   const WorkerMessage found = session.ask({{"op", "string"}, {"offset", 0}, {"limit", 2}, {"search", "B"}});

@@ -43,8 +43,10 @@ export class Inspector {
     await this.showModule(record.module, { fromPick: true });
   }
 
-  // Shows module `index` of the interpreted string (the glTF's numbering).
-  async showModule(index, { fromPick = false, stringItem = null } = {}) {
+  // Shows module `index` of the string: the glTF's provenance numbers what
+  // it drew by the module of the string that drew it (through interpretation
+  // rules, if any), as the String tab numbers the string.
+  async showModule(index, { fromPick = false } = {}) {
     const request = ++this.request;
     const model = this.viewer.model;
     let module = null;
@@ -55,13 +57,7 @@ export class Inspector {
       error = e.message;
     }
     if (request !== this.request) return;
-    // A string item is the derived string's numbering: the same module only when the server says so.
-    const sameModule = !stringItem || (module && module.string_index === stringItem.index);
-    if (stringItem && !sameModule) {
-      module = { index: null, string_index: stringItem.index, text: stringItem.text,
-        name: stringItem.text.replace(/\(.*$/s, ''), parameters: null, step: null };
-    }
-    const ranges = model && sameModule ? await rangesOfModule(model, index) : [];
+    const ranges = model && module ? await rangesOfModule(model, index) : [];
     if (request !== this.request) return;
     if (ranges.length) this.highlight.show(ranges);
     else this.highlight.clear();
@@ -84,8 +80,7 @@ export class Inspector {
       el('pre.module-text', {}, module.text),
       el('table.props', {},
         row('Parameters', parameters),
-        row('Index', module.index),
-        row('String index', module.string_index ?? 'made by interpretation'),
+        row('Index in the string', module.string_index),
         row('Made at step', module.step),
         row('Drawn', ranges.length ? `${elementCount(elements)} in ${ranges.length} part${ranges.length > 1 ? 's' : ''}` : 'nothing'),
       ),

@@ -57,7 +57,7 @@ const exports = exportMenu(viewer, currentView);
 toolbarRight.append(exports.node);
 header.append(toolbar.node, el('span.spacer'), toolbarRight);
 const params = new ParamsPanel(tabs.page('Parameters'), store, reportError);
-const strings = new StringTab(tabs.page('String'), (item) => inspector.showModule(item.index, { stringItem: item }));
+const strings = new StringTab(tabs.page('String'), (item) => inspector.showModule(item.index));
 const counts = new CountsTab(tabs.page('Counts'));
 tabs.onShow((name) => {
   strings.setVisible(name === 'String');
