@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <mutex>
 #include <chrono>
 #include <cstring>
 #include <vector>
@@ -30,6 +31,10 @@ WorkerProcess::WorkerProcess(std::vector<std::string> command, std::string worki
 WorkerProcess::~WorkerProcess() { stop(); }
 
 void WorkerProcess::start() {
+  // A worker that dies while a request is written to it is reported by the
+  // failed write; the signal would end this whole program instead.
+  static std::once_flag ignore_sigpipe;
+  std::call_once(ignore_sigpipe, [] { ::signal(SIGPIPE, SIG_IGN); });
   int requests[2], answers[2], console[2];
   if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0 || ::pipe2(console, O_CLOEXEC) != 0)
     throw WorkerFailure("crash", std::string("cannot start a worker: ") + std::strerror(errno));
