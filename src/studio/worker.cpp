@@ -47,11 +47,18 @@ json camera_json(const Simulation& simulation, const geometry::Scene& scene, int
   const geometry::Camera camera(view.view(view_id), bounds, width, height);
   const geometry::Vec3 center = (bounds.min + bounds.max) * 0.5f;
   const float distance = std::max(1e-6f, dot(center - camera.eye(), camera.direction()));
-  const auto& p = camera.projection();  // column-major: p[5] is the y scale
+  const auto& p = camera.projection();  // column-major: p[0], p[5] the scales, p[8], p[9], p[12], p[13] the offsets
+  // The renderer may centre the picture off the line of sight (cpfg frames
+  // the box from the view reference point, lpfg pans): an ordinary camera
+  // gets there by moving sideways, by what the projection offsets amount to
+  // at the distance looked at.
+  const float right = camera.perspective() ? p[8] * distance / p[0] : -p[12] / p[0];
+  const float up = camera.perspective() ? p[9] * distance / p[5] : -p[13] / p[5];
+  const geometry::Vec3 shift = camera.right() * right + camera.up() * up;
   json out = {
       {"perspective", camera.perspective()},
-      {"eye", vec(camera.eye())},
-      {"target", vec(camera.eye() + camera.direction() * distance)},
+      {"eye", vec(camera.eye() + shift)},
+      {"target", vec(camera.eye() + camera.direction() * distance + shift)},
       {"up", vec(camera.up())},
       {"near", camera.near_plane()},
       {"far", camera.far_plane()},

@@ -154,6 +154,24 @@ TEST(ModelSession, AParameterChangesTheRunNotTheFile) {
   EXPECT_FALSE(session.state_json()["params_modified"]);
 }
 
+TEST(ModelSession, ThePageLooksAtThePictureCpfgFramesOffTheLineOfSight) {
+  // cpfg looks from the viewpoint at the view reference point (the origin)
+  // and centres the plant's box in the window: a line from y = 0 to y = 10 is
+  // in the middle, so the page's camera looks at y = 5.
+  const std::string dir = test::make_temp_dir("session-cpfg-view");
+  write(dir + "/plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: F(10)\nendlsystem\n");
+  write(dir + "/plant.v", "viewpoint: 0,0,300\nview reference point: 0,0,0\nprojection: parallel\n");
+  SessionOptions options = options_for(dir + "/plant.l");
+  options.inputs = {io::InputFile(dir + "/plant.v")};
+  ModelSession session(options);
+  session.reload();
+  const json view = session.state_json()["view"];
+  ASSERT_TRUE(view.is_object()) << session.state_json()["error"].dump();
+  EXPECT_NEAR(view["target"][1].get<double>(), 5, 1e-3);
+  EXPECT_NEAR(view["eye"][1].get<double>(), 5, 1e-3);
+  EXPECT_NEAR(view["target"][0].get<double>(), 0, 1e-3);
+}
+
 TEST(ModelSession, AWatcherReloadsOnlyWhatChangedSinceTheLastOpen) {
   const std::string dir = test::make_temp_dir("session-watch");
   write(dir + "/plant.l", kModel);
