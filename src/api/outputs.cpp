@@ -29,12 +29,6 @@ Format format_of(const std::string& path) {
   return Format::Unknown;
 }
 
-// The view file, or lpfg's defaults when the model has none.
-const io::ViewFile& view_or_default(const Simulation& s) {
-  static const io::ViewFile defaults;
-  return s.inputs().view ? *s.inputs().view : defaults;
-}
-
 // The view file's texture images; none for a cpfg model in colormap mode,
 // where cpfg maps no textures (CPFG manual 6.7.4).
 std::vector<io::TextureImage> texture_images(const io::ViewFile& view, const Simulation& s) {
@@ -56,7 +50,7 @@ io::ImageSettings image_settings(const io::ViewFile& view, const Simulation& s) 
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_or_default(s), s),
+  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_file_or_default(s), s),
                                        options.width, options.height));
 }
 
@@ -68,7 +62,7 @@ geometry::TriangleMesh mesh_of(const geometry::Scene& scene, const geometry::Tes
 
 // The mesh files' mesh of a scene (cpfg's background included).
 geometry::TriangleMesh export_mesh(const geometry::Scene& scene, const Simulation& simulation) {
-  const io::ViewFile& view = view_or_default(simulation);
+  const io::ViewFile& view = view_file_or_default(simulation);
   // An L+C model's mesh is what lpfg exports (lines as cylinders of the
   // turtle's width whatever the line style); cpfg exports no meshes, so
   // a cpfg model's follows its view file.
@@ -87,6 +81,11 @@ geometry::Scene with_background(const geometry::Scene& plant, const Simulation& 
 
 }  // namespace
 
+const io::ViewFile& view_file_or_default(const Simulation& s) {
+  static const io::ViewFile defaults;
+  return s.inputs().view ? *s.inputs().view : defaults;
+}
+
 void check_output_path(const std::string& path) {
   if (format_of(path) == Format::Unknown)
     throw ModelError(SourceLocation{path, 0, 0},
@@ -99,7 +98,7 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
   geometry::Scene background_and_plant;
   if (simulation.inputs().background) background_and_plant = with_background(plant, simulation);
   const geometry::Scene& scene = simulation.inputs().background ? background_and_plant : plant;
-  const io::ViewFile& view = view_or_default(simulation);
+  const io::ViewFile& view = view_file_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
   const Format f = format_of(path);
   switch (f) {
@@ -127,7 +126,7 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
 }
 
 std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation) {
-  const io::ViewFile& view = view_or_default(simulation);
+  const io::ViewFile& view = view_file_or_default(simulation);
   const geometry::TriangleMesh mesh =
       mesh_of(simulation.inputs().background ? with_background(plant, simulation) : plant, view.tessellation_options());
   return io::encode_glb(mesh, simulation.inputs().palette, simulation.types(), texture_images(view, simulation));
@@ -147,7 +146,7 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
   const bool on_request = animation.display_on_request;
   // Which view is drawn is known once Start has run (UseView).
   geometry::ViewParameters view;
-  auto choose_view = [&] { view = view_or_default(simulation).view(simulation.primary_view()); };
+  auto choose_view = [&] { view = view_file_or_default(simulation).view(simulation.primary_view()); };
   if (!animation.scale_between_frames && !animation.new_view_between_frames) {
     // A first pass finds where the plant ends up, so the camera stays still.
     simulation.rewind();

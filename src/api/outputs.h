@@ -9,6 +9,9 @@
 
 namespace sylva {
 
+// The model's view file, or lpfg's defaults when it has none.
+const io::ViewFile& view_file_or_default(const Simulation& simulation);
+
 // Throws ModelError naming `path` if its extension is not an output format.
 void check_output_path(const std::string& path);
 

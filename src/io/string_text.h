@@ -14,4 +14,8 @@ namespace sylva::io {
 // The whole string on one line, ending with a newline.
 std::string format_string(const ModuleString& string, const ModuleTypes& types);
 
+// The module at byte offset `at` of `string`, appended to `text` as the
+// string writes it: its name or Name(p1,p2,...).
+void append_module_text(const StringView& string, std::size_t at, const ModuleTypes& types, std::string& text);
+
 }  // namespace sylva::io

@@ -39,6 +39,7 @@ class ModelSession {
 
   // The model's folder: what the page may read (served_path.h).
   const std::string& folder() const { return folder_; }
+  const std::string& model() const { return model_; }  // absolute
   // The files whose change reloads the model: the model, its inputs, the
   // panel files and whatever else the model's folder holds.
   std::vector<std::string> watched_files() const;

@@ -224,8 +224,8 @@ struct StudioServer::Impl {
         },
         [this](const httplib::Request& req, httplib::Response& res, const WorkerMessage& m) {
           std::string format = req.has_param("format") ? req.get_param_value("format") : "png";
-          const std::string name = std::filesystem::path(session.state_json()["model"].get<std::string>()).stem().string() +
-                                   (format == "string" ? ".str" : "." + format);
+          const std::string name =
+              std::filesystem::path(session.model()).stem().string() + (format == "string" ? ".str" : "." + format);
           res.set_content(m.payload, content_type_of(name));
           res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
         });

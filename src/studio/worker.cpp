@@ -14,6 +14,7 @@
 #include "api/simulation.h"
 #include "geometry/camera.h"
 #include "io/output_file.h"
+#include "io/string_text.h"
 #include "support/diagnostic.h"
 #include "support/whole_file.h"
 #include "studio/scene_instances.h"
@@ -40,8 +41,7 @@ const char* render_mode_name(geometry::RenderMode mode) {
 // The camera the PNG renderer would use for this scene, in terms a viewer
 // with an ordinary perspective or orthographic camera can take.
 json camera_json(const Simulation& simulation, const geometry::Scene& scene, int view_id, int width, int height) {
-  static const io::ViewFile defaults;
-  const io::ViewFile& view = simulation.inputs().view ? *simulation.inputs().view : defaults;
+  const io::ViewFile& view = view_file_or_default(simulation);
   geometry::Box bounds = scene.bounds();
   if (bounds.empty()) bounds.add({0, 0, 0});
   const geometry::Camera camera(view.view(view_id), bounds, width, height);
@@ -90,13 +90,8 @@ json camera_json(const Simulation& simulation, const geometry::Scene& scene, int
 }
 
 std::string module_text(const ModuleTypes& types, const StringView& v, std::size_t at) {
-  const ModuleId id = v.id_at(at);
-  std::string text = types.name(id);
-  if (types[id].param_size > 0) {
-    text += '(';
-    types.format_params(id, module_params(v.data, at), text);
-    text += ')';
-  }
+  std::string text;
+  io::append_module_text(v, at, types, text);
   return text;
 }
 
@@ -200,10 +195,8 @@ class Worker {
     geometry::Scene scene = simulation_->scene(view);
     WorkerMessage out = status();
     out.json["view"] = camera_json(*simulation_, scene, view, width, height);
-    static const io::ViewFile defaults;
-    const io::ViewFile& view_file = simulation_->inputs().view ? *simulation_->inputs().view : defaults;
     const std::string instances =
-        take_instances(scene, simulation_->inputs().palette, view_file.tessellation_options(),
+        take_instances(scene, simulation_->inputs().palette, view_file_or_default(*simulation_).tessellation_options(),
                        static_cast<std::size_t>(std::max(0, instances_above)));
     out.payload = scene_glb(scene, *simulation_);
     out.json["glb_size"] = out.payload.size();

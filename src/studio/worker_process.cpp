@@ -144,11 +144,9 @@ void WorkerProcess::interrupt() {
 }
 
 void WorkerProcess::stop() {
-  if (pid_ > 0) ::kill(-pid_, SIGKILL);
-  if (pid_ > 0) reap();
-  close_fd(requests_);
-  close_fd(answers_);
-  if (console_thread_.joinable()) console_thread_.join();
+  if (pid_ <= 0) return;
+  ::kill(-pid_, SIGKILL);
+  reap();  // closes the pipes and ends the console's thread
 }
 
 }  // namespace sylva::studio

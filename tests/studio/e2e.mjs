@@ -45,6 +45,17 @@ async function screenshot(page, label) {
   return path;
 }
 
+// Clicks the trunk of a tree standing in the middle: the lowest drawn cell of
+// the picture's middle column (a 64 x 64 pictureCells), a little above its foot.
+async function clickTrunk(page, picture) {
+  const box = await page.locator('canvas.view').boundingBox();
+  const column = 32;
+  let row = 63;
+  while (row > 0 && picture.cells[row * 64 + column] + picture.cells[row * 64 + column - 1] === 0) row--;
+  row -= 2;
+  await page.mouse.click(box.x + (box.width * column) / 64 - 1, box.y + (box.height * (row + 0.5)) / 64);
+}
+
 function assertPlantDrawn(picture, what) {
   const { cells, columns, rows } = picture;
   const at = (c, r) => cells[r * columns + c];
@@ -167,14 +178,8 @@ const tests = [
     assertPlantDrawn(await pictureCells(page), '3D tree');
     assert.equal(state.view.perspective, true);
     await screenshot(page, 'tree3d');
-    // Clicking the trunk (the middle, low) inspects the F there.
-    const box = await page.locator('canvas.view').boundingBox();
-    const picture = await pictureCells(page, 64, 64);
-    const column = 32;
-    let row = 63;
-    while (row > 0 && picture.cells[row * 64 + column] + picture.cells[row * 64 + column - 1] === 0) row--;
-    row -= 2;
-    await page.mouse.click(box.x + (box.width * column) / 64 - 1, box.y + (box.height * (row + 0.5)) / 64);
+    // Clicking the trunk inspects the F there.
+    await clickTrunk(page, await pictureCells(page, 64, 64));
     await page.waitForSelector('.module-name');
     assert.equal(await page.textContent('.module-name'), 'F');
     await screenshot(page, 'tree3d-picked');
@@ -190,12 +195,7 @@ const tests = [
     assertPlantDrawn(picture, 'instanced 3D tree');
     await screenshot(page, 'tree3d-instanced');
     // The trunk, as in the test above: an instanced cylinder of module F.
-    const box = await page.locator('canvas.view').boundingBox();
-    const column = 32;
-    let row = 63;
-    while (row > 0 && picture.cells[row * 64 + column] + picture.cells[row * 64 + column - 1] === 0) row--;
-    row -= 2;
-    await page.mouse.click(box.x + (box.width * column) / 64 - 1, box.y + (box.height * (row + 0.5)) / 64);
+    await clickTrunk(page, picture);
     await page.waitForSelector('.module-name');
     assert.equal(await page.textContent('.module-name'), 'F');
     await screenshot(page, 'tree3d-instanced-picked');
