@@ -18,6 +18,7 @@
 #include "io/output_file.h"
 #include "io/string_reader.h"
 #include "support/diagnostic.h"
+#include "support/interruption.h"
 
 namespace {
 
@@ -252,6 +253,8 @@ int main(int argc, char** argv) {
   r.outputs.insert(r.outputs.end(), reference_outputs.begin(), reference_outputs.end());
   if (r.string_path.empty()) r.string_path = reference_string;
 
+  // The studio stops its worker and server on these signals itself.
+  if (!*studio) sylva::interruption::install_handlers();
   try {
     if (*run) return run_command(r, run_options);
     if (*studio) return sylva::app::run_studio(studio_options, studio_build.build);

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/interruption.h"
+
 namespace sylva {
 
 WholeFile read_whole_file(const std::string& path) {
@@ -23,6 +25,7 @@ WholeFile read_whole_file(const std::string& path) {
 
 int write_file_atomically(const std::string& path, std::string_view content) {
   const std::string tmp = path + ".tmp" + std::to_string(getpid());
+  const interruption::TemporaryFile registered(tmp);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) return errno;
   bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();

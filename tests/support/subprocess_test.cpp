@@ -2,7 +2,13 @@
 // whole, stdin empty, and failures to start or a death by signal reported.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
 #include <string>
+#include <thread>
 
 #include "support/subprocess.h"
 
@@ -48,6 +54,34 @@ TEST(RunProcess, AProgramThatCannotStart) {
 TEST(RunProcess, KilledBySignal) {
   const ProcessResult r = run_process({"sh", "-c", "kill -TERM $$"});
   EXPECT_EQ(r.exit_code, -1);
+}
+
+TEST(RunProcess, ATimeoutKillsTheWholeProcessGroup) {
+  // The shell's background child writes a file once a second; after the
+  // timeout nothing of the group may be left to write it.
+  const std::string marker = testing::TempDir() + "/still_running_" + std::to_string(getpid());
+  std::remove(marker.c_str());
+  const auto start = std::chrono::steady_clock::now();
+  ProcessResult r = run_process({"sh", "-c", "(sleep 1; touch " + marker + ") & sleep 30"}, 0.3);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(r.timed_out);
+  EXPECT_EQ(r.exit_code, -1);
+  EXPECT_LT(seconds, 5.0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  EXPECT_FALSE(std::filesystem::exists(marker));
+}
+
+TEST(RunProcess, AProgramWithinItsTimeIsNotStopped) {
+  ProcessResult r = run_process({"sh", "-c", "echo done"}, 10);
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, "done\n");
+}
+
+TEST(RunProcess, TheChildRunsInAGroupOfItsOwn) {
+  ProcessResult r = run_process({"sh", "-c", "set -- $(cat /proc/$$/stat); echo $5"});
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(std::stoi(r.out), static_cast<int>(getpgrp()));
 }
 
 }  // namespace
