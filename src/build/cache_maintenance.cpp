@@ -24,7 +24,8 @@ namespace {
 
 constexpr std::uint64_t kDefaultLimit = std::uint64_t{1} << 30;
 // A temporary file this old belongs to a run that was killed outright (an
-// interrupted run removes its own); younger ones may be a compile going on.
+// interrupted run removes its own); younger ones may be a compile going on
+// (older versions of Sylva compiled from KEY.ii, and kept it).
 constexpr std::chrono::hours kAbandonedAfter{1};
 
 // A compiled model's files: KEY.so, KEY.sum, KEY.lock.
@@ -37,7 +38,7 @@ struct Entry {
 struct Contents {
   std::map<std::string, Entry> entries;
   std::vector<fs::path> manifests;
-  std::vector<fs::path> leftovers;  // intermediate files of older versions, abandoned temporary files
+  std::vector<fs::path> leftovers;  // abandoned temporary files, C++ older versions kept
   std::uint64_t bytes = 0;
 };
 
@@ -58,10 +59,8 @@ Contents scan(const ModelCache& cache) {
     if (::lstat(item.path().c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     const std::uint64_t bytes = static_cast<std::uint64_t>(st.st_size);
     const std::string key = name.substr(0, 32), extension = name.substr(33);
-    if (extension.find("tmp") != std::string::npos) {
+    if (extension.find("tmp") != std::string::npos || extension == "ii") {
       if (modified(st) < abandoned) contents.leftovers.push_back(item.path());
-    } else if (extension == "ii") {
-      contents.leftovers.push_back(item.path());
     } else if (extension == "manifest") {
       contents.manifests.push_back(item.path());
     } else if (extension == "so" || extension == "sum" || extension == "lock") {

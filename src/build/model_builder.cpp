@@ -100,8 +100,8 @@ std::string direct_key(const std::string& model_path, const std::string& source,
   return h.hex();
 }
 
-// The manifest's library, if the manifest is whole, written for this lookup,
-// and no file the model read has changed since.
+// The manifest, if it is whole, written for this lookup, and no file the
+// model read has changed since.
 std::optional<Manifest> still_valid_manifest(const ModelCache& cache, const std::string& lookup_key) {
   const WholeFile text = read_whole_file(cache.file(lookup_key + ".manifest").string());
   if (!text) return std::nullopt;
@@ -157,7 +157,7 @@ std::string translate_model(const std::string& model_path, const BuildOptions& o
 
 namespace {
 
-void tell_waiting(const std::string&) { std::fprintf(stderr, "sylva: waiting for another run compiling this model\n"); }
+void tell_waiting() { std::fprintf(stderr, "sylva: waiting for another run compiling this model\n"); }
 
 // Compiles KEY's library from `cpp` into the cache; returns its checksum.
 // Nothing is left behind but the library: not the C++ (it is large and
@@ -172,7 +172,11 @@ std::string compile_library(const ModelCache& cache, const std::string& key, con
   std::ofstream source_file(source, std::ios::binary);
   source_file << cpp;
   source_file.close();
-  if (!source_file) throw ModelError("cannot write " + source.string());
+  if (!source_file) {
+    std::error_code ignored;
+    fs::remove(source, ignored);
+    throw ModelError("cannot write " + source.string());
+  }
   std::vector<std::string> argv = {r.compiler};
   argv.insert(argv.end(), kCompileFlags.begin(), kCompileFlags.end());
   argv.insert(argv.end(), {"-o", output.string(), source.string()});
@@ -239,7 +243,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
     }
   }
 
-  Manifest manifest{lookup_key, key + ".so", translation.warnings, {}};
+  Manifest manifest{lookup_key, cache.library(key).filename().string(), translation.warnings, {}};
   for (const std::string& dep : translation.dependencies) {
     std::string path = fs::absolute(dep, ec).string();
     manifest.dependencies.push_back({file_stamp(path), path});

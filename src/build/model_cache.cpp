@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -33,16 +34,23 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
+// Read into one buffer of the file's size: growing a string chunk by chunk
+// costs more than hashing what it holds.
 std::optional<std::string> read_all(int fd) {
-  std::string bytes;
-  char buffer[1 << 16];
+  struct stat st;
+  if (::fstat(fd, &st) != 0) return std::nullopt;
+  std::string bytes(static_cast<std::size_t>(std::max<off_t>(st.st_size, 0)) + 1, '\0');
+  std::size_t size = 0;
   for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (size == bytes.size()) bytes.resize(bytes.size() * 2);  // it grew meanwhile
+    const ssize_t n = ::read(fd, bytes.data() + size, bytes.size() - size);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return std::nullopt;
-    if (n == 0) return bytes;
-    bytes.append(buffer, static_cast<std::size_t>(n));
+    if (n == 0) break;
+    size += static_cast<std::size_t>(n);
   }
+  bytes.resize(size);
+  return bytes;
 }
 
 // A rename is on the disk once the folder holding it is.
@@ -90,7 +98,7 @@ ModelCache::Lock::~Lock() {
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
-ModelCache::Lock ModelCache::lock(const std::string& key, void (*on_wait)(const std::string& key)) const {
+ModelCache::Lock ModelCache::lock(const std::string& key, void (*on_wait)()) const {
   const fs::path path = file(key + ".lock");
   for (bool told = false;;) {
     const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
@@ -98,7 +106,7 @@ ModelCache::Lock ModelCache::lock(const std::string& key, void (*on_wait)(const 
     if (fd < 0) return Lock();
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       if (errno != EWOULDBLOCK) return Lock(fd);
-      if (on_wait && !told) on_wait(key);
+      if (on_wait && !told) on_wait();
       told = true;
       while (::flock(fd, LOCK_EX) != 0)
         if (errno != EINTR) return Lock(fd);

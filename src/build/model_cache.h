@@ -46,7 +46,7 @@ class ModelCache {
     int fd_ = -1;
   };
   // Waits for the lock; `on_wait` is called first if another run holds it.
-  Lock lock(const std::string& key, void (*on_wait)(const std::string& key) = nullptr) const;
+  Lock lock(const std::string& key, void (*on_wait)() = nullptr) const;
   // The lock if no one holds it.
   std::optional<Lock> try_lock(const std::string& key) const;
 

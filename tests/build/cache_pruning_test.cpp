@@ -84,6 +84,7 @@ TEST_F(CachePruning, ClearRemovesEveryModelAndOnlySylvasFiles) {
   fs::last_write_time(options_.cache_dir + "/" + key + ".so.tmp123",
                       fs::file_time_type::clock::now() - std::chrono::hours(2));
   std::ofstream(options_.cache_dir + "/" + key + ".ii") << "int x;";
+  fs::last_write_time(options_.cache_dir + "/" + key + ".ii", fs::file_time_type::clock::now() - std::chrono::hours(2));
   const build::PruneResult result = build::clear_cache(cache());
   EXPECT_EQ(result.models_removed, 2);
   EXPECT_EQ(result.left.models, 0);
