@@ -62,10 +62,10 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   build::BuildOptions build = options.build;
   for (const std::string& define : function_name_defines(*inputs_)) build.defines.push_back(define);
   for (const std::string& define : view_name_defines(*inputs_)) build.defines.push_back(define);
-  build::BuiltModel built = build::build_model(model_path, build);
-  for (const std::string& warning : built.warnings) tell(warning + "\n");
-  compiled_now_ = built.compiled_now;
-  library_ = std::make_unique<build::ModelLibrary>(built.library_path);
+  build::LoadedModel loaded = build::load_model(model_path, build);
+  for (const std::string& warning : loaded.built.warnings) tell(warning + "\n");
+  compiled_now_ = loaded.built.compiled_now;
+  library_ = std::move(loaded.library);
 
   abi::ControlState& control = *library_->descriptor().control;
   answers_ = std::make_unique<InputAnswers>(*inputs_);

@@ -13,6 +13,7 @@
 #include "api/reference_command_line.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
+#include "app/cache_command.h"
 #include "app/studio_command.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
@@ -194,6 +195,11 @@ int main(int argc, char** argv) {
                   "Write the turtle's commands for the final string to FILE or '-', one per line")
       ->type_name("FILE");
   add_build_options(*run, run_options);
+  run->add_option("--compile-timeout", run_options.build.compile_timeout_seconds,
+                  "Seconds the C++ compiler may take for the model before it is stopped (default: "
+                  "$SYLVA_COMPILE_TIMEOUT or 600)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("SECONDS");
 
   CommonOptions translate_options;
   std::string translate_model, translate_output = "-";
@@ -207,6 +213,9 @@ int main(int argc, char** argv) {
   sylva::app::StudioOptions studio_options;
   CLI::App* studio = sylva::app::add_studio_command(app, studio_options);
   add_build_options(*studio, studio_build);
+
+  sylva::app::CacheOptions cache_options;
+  CLI::App* cache = sylva::app::add_cache_command(app, cache_options);
 
   // `run` and `studio` take lpfg's and cpfg's command lines as they are:
   // their files and options are taken out first, and Sylva's own options
@@ -258,6 +267,7 @@ int main(int argc, char** argv) {
   try {
     if (*run) return run_command(r, run_options);
     if (*studio) return sylva::app::run_studio(studio_options, studio_build.build);
+    if (*cache) return sylva::app::run_cache_command(cache_options);
     if (*translate) {
       sylva::io::write_output_file(translate_output,
                                    sylva::build::translate_model(translate_model, translate_options.build));

@@ -1,17 +1,23 @@
 #include "build/model_builder.h"
 
+#include <pwd.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "build/cache_maintenance.h"
+#include "build/cache_manifest.h"
+#include "build/model_cache.h"
 #include "lang/translator.h"
 #include "support/content_hash.h"
 #include "support/default_compiler.h"
 #include "support/diagnostic.h"
+#include "support/interruption.h"
 #include "support/subprocess.h"
 #include "support/whole_file.h"
 
@@ -24,8 +30,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bumped whenever generated code or the runtime's contract changes.
-constexpr const char* kCacheFormat = "sylva-model-cache-19";
+constexpr double kDefaultCompileTimeout = 600;
 
 const std::vector<std::string> kCompileFlags = {
     "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",
@@ -36,11 +41,6 @@ const std::vector<std::string> kCompileFlags = {
 std::string env_or(const char* name, const std::string& fallback) {
   const char* value = std::getenv(name);
   return value && *value ? value : fallback;
-}
-
-// Whole or not at all, so a build running beside this one never reads half a file.
-void write_cache_file(const fs::path& path, const std::string& content) {
-  if (write_file_atomically(path.string(), content) != 0) throw ModelError("cannot write " + path.string());
 }
 
 // Size and modification time: enough to notice an edited file.
@@ -64,7 +64,6 @@ std::string find_in_path(const std::string& program) {
 
 struct ResolvedOptions {
   std::string compiler;
-  fs::path cache_dir;
   std::string runtime;
   std::vector<std::string> defines;
   std::vector<std::string> include_dirs;
@@ -74,7 +73,6 @@ struct ResolvedOptions {
 ResolvedOptions resolve(const BuildOptions& options) {
   ResolvedOptions r;
   r.compiler = options.compiler.empty() ? default_compiler() : options.compiler;
-  r.cache_dir = options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
   r.runtime = options.runtime_include_dir.empty() ? default_runtime_include_dir() : options.runtime_include_dir;
   r.defines = options.defines;
   r.include_dirs = options.include_dirs;
@@ -102,25 +100,16 @@ std::string direct_key(const std::string& model_path, const std::string& source,
   return h.hex();
 }
 
-// A manifest records which library a model built into and the files it read.
-bool manifest_still_valid(const fs::path& manifest, std::string* library, std::vector<std::string>* warnings) {
-  std::ifstream in(manifest);
-  if (!in) return false;
-  std::string line;
-  bool have_library = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("library ", 0) == 0) {
-      *library = line.substr(8);
-      have_library = true;
-    } else if (line.rfind("warning ", 0) == 0) {
-      warnings->push_back(line.substr(8));
-    } else if (line.rfind("dep ", 0) == 0) {
-      std::size_t space = line.find(' ', 4);
-      if (space == std::string::npos) return false;
-      if (file_stamp(line.substr(space + 1)) != line.substr(4, space - 4)) return false;
-    }
-  }
-  return have_library && fs::exists(*library);
+// The manifest, if it is whole, written for this lookup, and no file the
+// model read has changed since.
+std::optional<Manifest> still_valid_manifest(const ModelCache& cache, const std::string& lookup_key) {
+  const WholeFile text = read_whole_file(cache.file(lookup_key + ".manifest").string());
+  if (!text) return std::nullopt;
+  std::optional<Manifest> manifest = read_manifest(text.bytes, lookup_key);
+  if (!manifest) return std::nullopt;
+  for (const Manifest::Dependency& dep : manifest->dependencies)
+    if (file_stamp(dep.path) != dep.stamp) return std::nullopt;
+  return manifest;
 }
 
 // Compiler messages name the model's lines already (the generated code carries
@@ -142,16 +131,77 @@ std::string compiler_messages(const std::string& err) {
 
 std::string default_cache_dir() {
   if (const char* dir = std::getenv("SYLVA_CACHE_DIR"); dir && *dir) return dir;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/sylva";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/') return std::string(xdg) + "/sylva";
   if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/sylva";
-  return (fs::temp_directory_path() / "sylva-cache").string();
+  if (const passwd* user = getpwuid(getuid()); user && user->pw_dir && *user->pw_dir)
+    return std::string(user->pw_dir) + "/.cache/sylva";
+  // A folder every user can write in would let another plant code for this one to run.
+  throw ModelError("no home folder to keep compiled models in: set SYLVA_CACHE_DIR or give --cache-dir");
 }
 
 std::string default_runtime_include_dir() { return env_or("SYLVA_RUNTIME_DIR", SYLVA_RUNTIME_INCLUDE_DIR); }
 
+double default_compile_timeout() {
+  const char* text = std::getenv("SYLVA_COMPILE_TIMEOUT");
+  if (!text || !*text) return kDefaultCompileTimeout;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  if (*end != '\0' || !std::isfinite(seconds) || seconds <= 0)
+    throw ModelError(std::string("SYLVA_COMPILE_TIMEOUT: expected a positive number of seconds, not '") + text + "'");
+  return seconds;
+}
+
 std::string translate_model(const std::string& model_path, const BuildOptions& options) {
   return lang::translate_file(model_path, translator_options(resolve(options))).cpp;
 }
+
+namespace {
+
+void tell_waiting() { std::fprintf(stderr, "sylva: waiting for another run compiling this model\n"); }
+
+// Compiles KEY's library from `cpp` into the cache; returns its checksum.
+// Nothing is left behind but the library: not the C++ (it is large and
+// `sylva translate` prints it), not the compiler's output if it fails.
+std::string compile_library(const ModelCache& cache, const std::string& key, const std::string& cpp,
+                            const std::string& model_path, const ResolvedOptions& r, const BuildOptions& options) {
+  const double timeout = options.compile_timeout_seconds > 0 ? options.compile_timeout_seconds : default_compile_timeout();
+  fs::path source = temporary_path(cache.file(key));
+  source += ".ii";
+  const fs::path output = temporary_path(cache.library(key));
+  const interruption::TemporaryFile registered_source(source.string()), registered_output(output.string());
+  std::ofstream source_file(source, std::ios::binary);
+  source_file << cpp;
+  source_file.close();
+  if (!source_file) {
+    std::error_code ignored;
+    fs::remove(source, ignored);
+    throw ModelError("cannot write " + source.string());
+  }
+  std::vector<std::string> argv = {r.compiler};
+  argv.insert(argv.end(), kCompileFlags.begin(), kCompileFlags.end());
+  argv.insert(argv.end(), {"-o", output.string(), source.string()});
+  if (options.verbose) fprintf(stderr, "sylva: compiling %s\n", model_path.c_str());
+  const ProcessResult result = run_process(argv, timeout);
+  std::error_code ec;
+  fs::remove(source, ec);
+  if (result.timed_out || result.exit_code != 0) {
+    fs::remove(output, ec);
+    if (result.timed_out) {
+      char limit[32];
+      std::snprintf(limit, sizeof limit, "%g", timeout);
+      throw ModelError(SourceLocation{model_path, 0, 0},
+                       std::string("compiling the model took longer than the limit of ") + limit +
+                           " seconds, and the compiler was stopped (--compile-timeout SECONDS or "
+                           "SYLVA_COMPILE_TIMEOUT allow more)");
+    }
+    std::string messages = compiler_messages(result.err);
+    if (messages.empty()) messages = model_path + ": error: the C++ compiler (" + r.compiler + ") failed";
+    throw ModelError(messages);
+  }
+  return cache.install_library(output, key);
+}
+
+}  // namespace
 
 BuiltModel build_model(const std::string& model_path, const BuildOptions& options) {
   ResolvedOptions r = resolve(options);
@@ -162,14 +212,17 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
                                                        : "no such file";
     throw ModelError(SourceLocation{model_path, 0, 0}, why);
   }
-  fs::create_directories(r.cache_dir, ec);
-  if (ec) throw ModelError("cannot create the model cache " + r.cache_dir.string() + ": " + ec.message());
+  const ModelCache cache(options.cache_dir.empty() ? default_cache_dir() : options.cache_dir);
 
   std::string source = read_whole_file(model_path).bytes;
-  fs::path manifest = r.cache_dir / (direct_key(model_path, source, r) + ".manifest");
-  std::string library;
-  std::vector<std::string> cached_warnings;
-  if (manifest_still_valid(manifest, &library, &cached_warnings)) return BuiltModel{library, false, cached_warnings};
+  const std::string lookup_key = direct_key(model_path, source, r);
+  if (const std::optional<Manifest> manifest = still_valid_manifest(cache, lookup_key)) {
+    const std::string key = fs::path(manifest->library).stem().string();
+    if (const std::optional<std::string> checksum = cache.recorded_checksum(key)) {
+      cache.mark_used(key);
+      return BuiltModel{cache.library(key).string(), *checksum, false, manifest->warnings};
+    }
+  }
 
   lang::Translation translation = lang::translate_file(model_path, translator_options(r));
   ContentHash h;
@@ -177,38 +230,26 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   h.add(r.compiler);
   for (const std::string& flag : kCompileFlags) h.add(flag);
   h.add(translation.cpp);
-  std::string key = h.hex();
-  fs::path so = r.cache_dir / (key + ".so");
-  BuiltModel built{so.string(), false, translation.warnings};
-
-  if (!fs::exists(so)) {
-    fs::path ii = r.cache_dir / (key + ".ii");
-    write_cache_file(ii, translation.cpp);
-    fs::path tmp = so;
-    tmp += ".tmp" + std::to_string(getpid());
-    std::vector<std::string> argv = {r.compiler};
-    argv.insert(argv.end(), kCompileFlags.begin(), kCompileFlags.end());
-    argv.insert(argv.end(), {"-o", tmp.string(), ii.string()});
-    if (options.verbose) fprintf(stderr, "sylva: compiling %s\n", model_path.c_str());
-    ProcessResult result = run_process(argv);
-    if (result.exit_code != 0) {
-      fs::remove(tmp, ec);
-      std::string messages = compiler_messages(result.err);
-      if (messages.empty()) messages = model_path + ": error: the C++ compiler (" + r.compiler + ") failed";
-      throw ModelError(messages);
+  const std::string key = h.hex();
+  BuiltModel built{cache.library(key).string(), {}, false, translation.warnings};
+  {
+    const ModelCache::Lock lock = cache.lock(key, options.verbose ? tell_waiting : nullptr);
+    if (const std::optional<std::string> checksum = cache.verified_checksum(key)) {
+      built.library_checksum = *checksum;
+      cache.mark_used(key);
+    } else {
+      built.library_checksum = compile_library(cache, key, translation.cpp, model_path, r, options);
+      built.compiled_now = true;
     }
-    fs::rename(tmp, so);
-    built.compiled_now = true;
   }
 
-  std::string manifest_text = "library " + so.string() + "\n";
-  for (const std::string& warning : translation.warnings)
-    if (warning.find('\n') == std::string::npos) manifest_text += "warning " + warning + "\n";
+  Manifest manifest{lookup_key, cache.library(key).filename().string(), translation.warnings, {}};
   for (const std::string& dep : translation.dependencies) {
     std::string path = fs::absolute(dep, ec).string();
-    manifest_text += "dep " + file_stamp(path) + " " + path + "\n";
+    manifest.dependencies.push_back({file_stamp(path), path});
   }
-  write_cache_file(manifest, manifest_text);
+  cache.write_file(lookup_key + ".manifest", manifest_text(manifest));
+  if (built.compiled_now) prune_cache_if_full(cache, key);
   return built;
 }
 

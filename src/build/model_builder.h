@@ -10,7 +10,7 @@ namespace sylva::build {
 
 struct BuildOptions {
   std::string compiler;             // empty: $SYLVA_CXX, $CXX, then g++
-  std::string cache_dir;            // empty: $SYLVA_CACHE_DIR or ~/.cache/sylva
+  std::string cache_dir;            // empty: default_cache_dir()
   std::string runtime_include_dir;  // empty: the runtime this program was built with
   std::vector<std::string> defines;
   // Searched for included files after the model's own folder (a copy of a
@@ -18,10 +18,12 @@ struct BuildOptions {
   std::vector<std::string> include_dirs;
   bool verbose = false;             // say what is being done on stderr
   std::string language;             // empty or "auto": recognised; "cpfg" or "lc"
+  double compile_timeout_seconds = 0;  // 0: default_compile_timeout()
 };
 
 struct BuiltModel {
-  std::string library_path;
+  std::string library_path;      // inside the cache
+  std::string library_checksum;  // of its bytes when it was compiled
   bool compiled_now = false;  // false: taken from the cache
   // The translator's warnings (kept with the cached library, so a cached
   // model warns as it did when it was built).
@@ -29,14 +31,20 @@ struct BuiltModel {
 };
 
 // Throws ModelError with the model's file and line for translation errors and
-// for C++ errors in the model's code.
+// for C++ errors in the model's code, and when the compile runs past its time
+// limit. Concurrent runs of one model compile it once.
 BuiltModel build_model(const std::string& model_path, const BuildOptions& options);
 
 // The C++ the model translates to (what `sylva translate` prints).
 std::string translate_model(const std::string& model_path, const BuildOptions& options);
 
 // Defaults resolved from the environment (the compiler: support/default_compiler.h).
+// The cache: $SYLVA_CACHE_DIR, $XDG_CACHE_HOME/sylva, then ~/.cache/sylva in
+// the home folder ($HOME, else the user's entry in the password database);
+// never a folder shared with other users, so ModelError if there is no home.
 std::string default_cache_dir();
 std::string default_runtime_include_dir();
+// $SYLVA_COMPILE_TIMEOUT, else 600 seconds.
+double default_compile_timeout();
 
 }  // namespace sylva::build

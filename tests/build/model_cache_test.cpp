@@ -1,77 +1,21 @@
-// The compiled-model cache, with a stand-in compiler: preprocessing goes to
-// the real g++, a compile only writes an empty library and logs it. So each
-// test sees exactly when a model is compiled again, without compiling one.
+// The compiled-model cache, with a stand-in compiler (cache_test_support.h).
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "build/cache_test_support.h"
 #include "build/model_builder.h"
 #include "support/diagnostic.h"
-#include "test_support.h"
 
 namespace sylva::test {
 namespace {
 namespace fs = std::filesystem;
 
-const char* const kStandInCompiler =
-    "#!/bin/sh\n"
-    "case \" $* \" in *\" -E \"*) exec g++ \"$@\";; esac\n"
-    "out=\n"
-    "while [ $# -gt 0 ]; do if [ \"$1\" = -o ]; then out=$2; fi; shift; done\n"
-    "echo \"$out\" >> \"$(dirname \"$0\")/compiles.log\"\n"
-    ": > \"$out\"\n";
-
-class ModelCache : public ::testing::Test {
- protected:
-  ModelCache() : dir_(make_temp_dir(std::string("cache-") + current_test())) {
-    options_.compiler = stand_in("cc1");
-    options_.cache_dir = dir_ + "/cache";
-    write("model.l", "#include \"step.h\"\nmodule A(float);\naxiom: A(STEP);\n");
-    write("step.h", "#define STEP 1\n");
-  }
-
-  static std::string current_test() { return ::testing::UnitTest::GetInstance()->current_test_info()->name(); }
-
-  // A copy of the stand-in compiler in a folder of its own (its log beside it).
-  std::string stand_in(const std::string& name, const char* script = kStandInCompiler) {
-    fs::create_directories(dir_ + "/" + name);
-    const std::string path = dir_ + "/" + name + "/c++";
-    std::ofstream(path) << script;
-    fs::permissions(path, fs::perms::owner_all);
-    return path;
-  }
-  void write(const std::string& file, const std::string& text) { std::ofstream(dir_ + "/" + file) << text; }
-  // Rewritten with another modification time, as an edit a moment later.
-  void edit(const std::string& file, const std::string& text) {
-    const fs::path path = dir_ + "/" + file;
-    const auto before = fs::last_write_time(path);
-    write(file, text);
-    fs::last_write_time(path, before + std::chrono::seconds(2));
-  }
-  build::BuiltModel build() { return build::build_model(dir_ + "/model.l", options_); }
-
-  // The libraries `compiler` has compiled, in order.
-  std::vector<std::string> compiles(const std::string& compiler) const {
-    std::vector<std::string> lines;
-    std::ifstream in(fs::path(compiler).parent_path() / "compiles.log");
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  }
-  int files_ending(const std::string& suffix) const {
-    int n = 0;
-    for (const auto& entry : fs::directory_iterator(options_.cache_dir))
-      if (entry.path().string().ends_with(suffix)) ++n;
-    return n;
-  }
-
-  std::string dir_;
-  build::BuildOptions options_;
-};
+class ModelCache : public CacheTest {};
 
 TEST_F(ModelCache, AnUnchangedModelIsNotCompiledAgain) {
   const build::BuiltModel first = build();
@@ -156,11 +100,7 @@ TEST_F(ModelCache, TheTranslatorsWarningsComeBackFromTheCache) {
 
 TEST_F(ModelCache, AFailedCompileLeavesNoLibrary) {
   // It preprocesses, then every compile fails with a message about the model.
-  options_.compiler = stand_in("broken",
-                               "#!/bin/sh\n"
-                               "case \" $* \" in *\" -E \"*) exec g++ \"$@\";; esac\n"
-                               "echo 'model.l:3:8: error: no' >&2\n"
-                               "exit 1\n");
+  options_.compiler = stand_in("broken", stand_in_script(": > \"$out\"; echo 'model.l:3:8: error: no' >&2; exit 1"));
   try {
     build();
     FAIL() << "no error";
@@ -169,6 +109,20 @@ TEST_F(ModelCache, AFailedCompileLeavesNoLibrary) {
   }
   EXPECT_EQ(files_ending(".so"), 0);
   EXPECT_EQ(files_ending(".manifest"), 0);
+  // Nor its C++, nor the compiler's partial output.
+  EXPECT_EQ(files_ending(".ii"), 0);
+  EXPECT_EQ(files_containing(".tmp"), 0);
+  EXPECT_EQ(compiles(options_.compiler).size(), 1u);
+}
+
+TEST_F(ModelCache, ACompileKeepsOnlyTheLibrary) {
+  const build::BuiltModel built = build();
+  EXPECT_EQ(files_ending(".ii"), 0);
+  EXPECT_EQ(files_containing(".tmp"), 0);
+  EXPECT_EQ(files_ending(".so"), 1);
+  EXPECT_EQ(files_ending(".sum"), 1);
+  EXPECT_EQ(files_ending(".manifest"), 1);
+  EXPECT_EQ(fs::status(options_.cache_dir).permissions() & fs::perms::all, fs::perms::owner_all);
 }
 
 }  // namespace
