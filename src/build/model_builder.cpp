@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "build/compiler_messages.h"
 #include "lang/translator.h"
 #include "support/content_hash.h"
 #include "support/default_compiler.h"
@@ -121,21 +122,6 @@ bool manifest_still_valid(const fs::path& manifest, std::string* library, std::v
     }
   }
   return have_library && fs::exists(*library);
-}
-
-// Compiler messages name the model's lines already (the generated code carries
-// line markers); drop the lines that only name generated functions.
-std::string compiler_messages(const std::string& err) {
-  std::stringstream in(err);
-  std::string line, kept;
-  while (std::getline(in, line)) {
-    if (line.find("In function") != std::string::npos && line.find("sylva_") != std::string::npos) continue;
-    if (line.find("At global scope") != std::string::npos) continue;
-    if (line.find("compilation terminated") != std::string::npos) continue;
-    kept += line + "\n";
-  }
-  while (!kept.empty() && kept.back() == '\n') kept.pop_back();
-  return kept;
 }
 
 }  // namespace
