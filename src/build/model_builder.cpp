@@ -12,6 +12,7 @@
 
 #include "build/cache_maintenance.h"
 #include "build/cache_manifest.h"
+#include "build/compiler_messages.h"
 #include "build/model_cache.h"
 #include "lang/translator.h"
 #include "support/content_hash.h"
@@ -110,21 +111,6 @@ std::optional<Manifest> still_valid_manifest(const ModelCache& cache, const std:
   for (const Manifest::Dependency& dep : manifest->dependencies)
     if (file_stamp(dep.path) != dep.stamp) return std::nullopt;
   return manifest;
-}
-
-// Compiler messages name the model's lines already (the generated code carries
-// line markers); drop the lines that only name generated functions.
-std::string compiler_messages(const std::string& err) {
-  std::stringstream in(err);
-  std::string line, kept;
-  while (std::getline(in, line)) {
-    if (line.find("In function") != std::string::npos && line.find("sylva_") != std::string::npos) continue;
-    if (line.find("At global scope") != std::string::npos) continue;
-    if (line.find("compilation terminated") != std::string::npos) continue;
-    kept += line + "\n";
-  }
-  while (!kept.empty() && kept.back() == '\n') kept.pop_back();
-  return kept;
 }
 
 }  // namespace

@@ -1,29 +1,19 @@
 #include "inputs/preprocessor.h"
 
-#include <regex>
-
 #include "support/diagnostic.h"
 #include "support/line_marker.h"
+#include "support/preprocessor_errors.h"
 #include "support/subprocess.h"
 
 namespace sylva::io {
 
 namespace {
 
-[[noreturn]] void preprocessor_failed(const std::string& path, const std::string& compiler, const ProcessResult& result) {
+[[noreturn]] void preprocessor_failed(const std::string& path, const std::string& argument, const std::string& compiler,
+                                      const ProcessResult& result) {
   if (result.exit_code == -1 && result.err.starts_with("cannot run"))
     throw ModelError(SourceLocation{path, 0, 0}, "cannot run the C preprocessor: " + result.err);
-  static const std::regex diagnostic(R"(^(.*?):(\d+):(\d+): (?:fatal )?error: (.*)$)");
-  std::size_t start = 0;
-  while (start < result.err.size()) {
-    std::size_t end = result.err.find('\n', start);
-    if (end == std::string::npos) end = result.err.size();
-    std::string line = result.err.substr(start, end - start);
-    std::smatch m;
-    if (std::regex_match(line, m, diagnostic))
-      throw ModelError(SourceLocation{m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())}, m[4].str());
-    start = end + 1;
-  }
+  if (std::optional<ModelError> error = first_preprocessor_error(result.err, argument, path)) throw *error;
   std::string first = result.err.substr(0, result.err.find('\n'));
   throw ModelError(SourceLocation{path, 0, 0},
                    "the C preprocessor (" + compiler + " -E) failed" + (first.empty() ? std::string() : ": " + first));
@@ -39,7 +29,7 @@ std::vector<PreprocessedLine> preprocess_file(const std::string& path, const std
   // A path starting with '-' would read as an option.
   std::string argument = path.starts_with("-") ? "./" + path : path;
   ProcessResult result = run_process({compiler, "-E", "-x", "c++", "-std=c++17", "-w", argument});
-  if (result.exit_code != 0) preprocessor_failed(path, compiler, result);
+  if (result.exit_code != 0) preprocessor_failed(path, argument, compiler, result);
   std::vector<PreprocessedLine> lines;
   std::string file = path;
   int line_number = 1;

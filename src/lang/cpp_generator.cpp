@@ -1,7 +1,11 @@
 #include "lang/cpp_generator.h"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
+
+#include "lang/constant_modules.h"
+#include "lang/mapped_writer.h"
 
 namespace sylva::lang {
 namespace {
@@ -15,123 +19,11 @@ const char* kind_name(abi::RuleKind kind) {
   return "";
 }
 
-std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') q += '\\';
-    q += c;
-  }
-  return q + "\"";
-}
-
 std::string join_types(const std::vector<std::string>& types) {
   std::string list;
   for (std::size_t k = 0; k < types.size(); ++k) list += (k ? ", " : "") + types[k];
   return list;
 }
-
-// Writes C++ whose lines map back to the model: tokens are placed on the line
-// (and column, where possible) they came from, with line markers in between.
-class MappedWriter {
- public:
-  explicit MappedWriter(const std::vector<std::string>& files) : files_(files) {}
-
-  void token(const Token& t) {
-    if (t.kind == TokenKind::Verbatim) {
-      move_to(t.file, t.line);
-      text_ += t.text;
-      line_ += count_lines(t.text);
-      at_line_start_ = true;
-      return;
-    }
-    move_to(t.file, t.line);
-    if (at_line_start_) {
-      text_.append(static_cast<std::size_t>(t.column > 1 ? t.column - 1 : 0), ' ');
-    } else if (t.space_before || needs_space(t)) {
-      text_ += ' ';
-    }
-    text_ += t.text;
-    last_char_ = text_.back();
-    at_line_start_ = false;
-  }
-
-  void tokens(const Code& code) {
-    for (const Token& t : code) token(t);
-  }
-
-  // Code starting a line of its own at its first token's line and column, so
-  // that a compiler error about it points exactly there.
-  void tokens_in_place(const Code& code) {
-    if (code.empty()) return;
-    const Token& first = code.front();
-    if (!at_line_start_) text_ += '\n';
-    text_ += "# " + std::to_string(first.line) + " " + quoted(files_[first.file]) + "\n";
-    file_ = first.file;
-    line_ = first.line;
-    at_line_start_ = true;
-    tokens(code);
-  }
-
-  // Generated text on the current line, attributed to the current position.
-  void inline_text(const std::string& s) {
-    if (!at_line_start_) text_ += ' ';
-    text_ += s;
-    last_char_ = ' ';
-    at_line_start_ = false;
-  }
-
-  // Generated text attributed to `at` (errors in it point there).
-  void at(const Token& where, const std::string& s) {
-    move_to(where.file, where.line);
-    inline_text(s);
-  }
-
-  // Generated lines not attributed to the model.
-  void block(const std::string& s) {
-    if (!at_line_start_) text_ += '\n';
-    text_ += s;
-    if (!s.empty() && s.back() != '\n') text_ += '\n';
-    file_ = -1;
-    at_line_start_ = true;
-  }
-
-  std::string take() { return std::move(text_); }
-
- private:
-  static int count_lines(const std::string& s) {
-    int n = 0;
-    for (char c : s) n += c == '\n';
-    return n;
-  }
-
-  bool needs_space(const Token& t) const {
-    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    return word(last_char_) && word(t.text[0]);
-  }
-
-  void move_to(int file, int line) {
-    if (file != file_ || line < line_ || line > line_ + 8) {
-      if (!at_line_start_) text_ += '\n';
-      text_ += "# " + std::to_string(line) + " " + quoted(files_[file]) + "\n";
-      file_ = file;
-      line_ = line;
-      at_line_start_ = true;
-      return;
-    }
-    while (line_ < line) {
-      text_ += '\n';
-      ++line_;
-      at_line_start_ = true;
-    }
-  }
-
-  const std::vector<std::string>& files_;
-  std::string text_;
-  int file_ = -1;
-  int line_ = 0;
-  bool at_line_start_ = true;
-  char last_char_ = ' ';
-};
 
 class CppGenerator {
  public:
@@ -319,50 +211,78 @@ class CppGenerator {
       for (std::size_t j = 0; j < m.args.size(); ++j) {
         out_.inline_text("::sylva::rt::in_context_parameter<" + std::to_string(j) + ", " + types + ">(sylva_ic[" +
                          std::to_string(k) + "],");
-        out_.tokens_in_place(m.args[j]);
+        out_.tokens(m.args[j]);
         out_.inline_text(");");
       }
     }
     out_.inline_text("} sylva_ic_ok; }))");
   }
 
-  // Room for all the modules is reserved once; then each is written in turn.
+  // Room for all the modules is reserved once; then each is written in turn:
+  // runs of modules whose arguments are literals as bytes encoded here, the
+  // others as calls.
   void emit_calls(const std::vector<ModuleCall>& calls, const std::string& target) {
     if (calls.empty()) return;
-    std::string bytes;
-    for (const ModuleCall& call : calls)
-      bytes += std::string(bytes.empty() ? "" : " + ") + "::sylva::rt::module_bytes<" +
-               join_types(module(call.name).param_types) + ">";
-    out_.inline_text("::sylva::abi::ModuleBuffer* sylva_o = " + target + "; sylva_o->reserve_more(" + bytes +
-                     "); unsigned char* sylva_at = sylva_o->data + sylva_o->size;");
+    std::vector<std::optional<std::string>> encoded;
+    std::size_t encoded_size = 0;
+    std::map<std::string, std::size_t> called;  // how many modules of each parameter list are calls
     for (const ModuleCall& call : calls) {
       const ModuleDecl& decl = module(call.name);
-      // cpfg evaluates a module's parameters left to right (ran(1) before the
-      // next ran(1)); the elements of a braced list are evaluated in order,
-      // a function's arguments are not.
-      std::size_t in_order = 0;
-      if (model_.cpfg)
-        while (in_order < call.args.size() && decl.param_types[in_order] == "float") ++in_order;
-      if (in_order > 1) {
-        out_.at(call.at, "{ const float sylva_v[] = {");
-        for (std::size_t k = 0; k < in_order; ++k) {
-          if (k) out_.inline_text(",");
-          out_.tokens(call.args[k]);
-        }
-        out_.inline_text("};");
-      } else {
-        in_order = 0;
-      }
-      out_.at(call.at, "::sylva::rt::put_module<" + join_types(decl.param_types) + ">(sylva_at, " +
-                           std::to_string(module_id_.at(call.name)));
-      for (std::size_t k = 0; k < call.args.size(); ++k) {
-        out_.inline_text(",");
-        if (k < in_order) out_.inline_text("sylva_v[" + std::to_string(k) + "]");
-        else out_.tokens(call.args[k]);
-      }
-      out_.inline_text(in_order > 0 ? "); }" : ");");
+      encoded.push_back(constant_module_bytes(static_cast<abi::ModuleId>(module_id_.at(call.name)), decl.param_types,
+                                              call.args));
+      if (encoded.back()) encoded_size += encoded.back()->size();
+      else ++called[join_types(decl.param_types)];
     }
+    std::string bytes = encoded_size ? std::to_string(encoded_size) : "";
+    for (const auto& [types, count] : called)
+      bytes += (bytes.empty() ? "" : " + ") + std::to_string(count) + " * ::sylva::rt::module_bytes<" + types + ">";
+    out_.inline_text("::sylva::abi::ModuleBuffer* sylva_o = " + target + "; sylva_o->reserve_more(" + bytes +
+                     "); unsigned char* sylva_at = sylva_o->data + sylva_o->size;");
+    std::string run;
+    auto put_run = [&] {
+      if (run.empty()) return;
+      out_.inline_text("::sylva::rt::put_encoded_modules(sylva_at, " + bytes_literal(run) + ", " +
+                       std::to_string(run.size()) + ");");
+      run.clear();
+    };
+    for (std::size_t k = 0; k < calls.size(); ++k) {
+      if (encoded[k]) {
+        run += *encoded[k];
+        continue;
+      }
+      put_run();
+      emit_call(calls[k]);
+    }
+    put_run();
     out_.inline_text("sylva_o->size = static_cast<::std::size_t>(sylva_at - sylva_o->data);");
+  }
+
+  void emit_call(const ModuleCall& call) {
+    const ModuleDecl& decl = module(call.name);
+    // cpfg evaluates a module's parameters left to right (ran(1) before the
+    // next ran(1)); the elements of a braced list are evaluated in order,
+    // a function's arguments are not.
+    std::size_t in_order = 0;
+    if (model_.cpfg)
+      while (in_order < call.args.size() && decl.param_types[in_order] == "float") ++in_order;
+    if (in_order > 1) {
+      out_.at(call.at, "{ const float sylva_v[] = {");
+      for (std::size_t k = 0; k < in_order; ++k) {
+        if (k) out_.inline_text(",");
+        out_.tokens(call.args[k]);
+      }
+      out_.inline_text("};");
+    } else {
+      in_order = 0;
+    }
+    out_.at(call.at, "::sylva::rt::put_module<" + join_types(decl.param_types) + ">(sylva_at, " +
+                         std::to_string(module_id_.at(call.name)));
+    for (std::size_t k = 0; k < call.args.size(); ++k) {
+      out_.inline_text(",");
+      if (k < in_order) out_.inline_text("sylva_v[" + std::to_string(k) + "]");
+      else out_.tokens(call.args[k]);
+    }
+    out_.inline_text(in_order > 0 ? "); }" : ");");
   }
 
   void emit_tables() {

@@ -11,6 +11,7 @@
 #include "lang/token.h"
 #include "support/diagnostic.h"
 #include "support/line_marker.h"
+#include "support/preprocessor_errors.h"
 #include "support/subprocess.h"
 #include "support/whole_file.h"
 
@@ -29,8 +30,10 @@ std::string read_model_file(const std::string& path) {
   return std::move(file.bytes);
 }
 
-// The preprocessor's complaints already carry file:line:column; keep them.
+// The preprocessor's first error at its file, line and column; its whole
+// output where none is located.
 [[noreturn]] void preprocessor_failed(const std::string& path, const ProcessResult& r) {
+  if (std::optional<ModelError> error = first_preprocessor_error(r.err, path, path)) throw *error;
   std::string message = r.err.empty() ? "the C preprocessor failed" : r.err;
   while (!message.empty() && message.back() == '\n') message.pop_back();
   throw ModelError(message.find(path) != std::string::npos ? message : path + ": error: " + message);

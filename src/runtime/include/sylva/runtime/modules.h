@@ -65,6 +65,13 @@ inline void put_module(unsigned char*& at, abi::ModuleId id, std::type_identity_
   at += sizeof id;
 }
 
+// Writes `n` bytes of modules the translator encoded itself (those whose
+// arguments are all literals) and advances `at`.
+inline void put_encoded_modules(unsigned char*& at, const char* bytes, std::size_t n) {
+  std::memcpy(at, bytes, n);
+  at += n;
+}
+
 // ---- Printing parameters so that they read back exactly -------------------
 
 inline void format_number(abi::TextSink* out, const char* fmt, double v) {
