@@ -13,6 +13,7 @@ PACKAGES=(
   libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
   libcpp-httplib-dev                                   # the studio's web server
   chromium                                             # the studio's browser tests (headless)
+  clang libclang-rt-14-dev                             # the sanitizer build and the fuzz targets (libFuzzer)
 )
 # The studio's page is bundled with Node.js packages (web/package.json): Debian's
 # nodejs and npm unless the machine has them already.

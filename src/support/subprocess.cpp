@@ -28,6 +28,22 @@ sigset_t interrupting_signals() {
   return set;
 }
 
+// SIGTERM first, so a compiler driver removes its own temporary files; the
+// whole group is killed if it has not ended after a short grace.
+void stop_group(pid_t group) {
+  kill(-group, SIGTERM);
+  for (int i = 0; i < 40; ++i) {
+    int status = 0;
+    const pid_t ended = waitpid(group, &status, WNOHANG);
+    if (ended == group || (ended < 0 && errno != EINTR)) {
+      kill(-group, SIGKILL);  // what the leader left behind
+      return;
+    }
+    usleep(50'000);
+  }
+  kill(-group, SIGKILL);
+}
+
 }  // namespace
 
 ProcessResult run_process(const std::vector<std::string>& argv, double timeout_seconds) {
@@ -92,7 +108,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, double timeout_s
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
       if (left <= 0) {
         result.timed_out = true;
-        kill(-pid, SIGKILL);
+        stop_group(pid);
         break;
       }
       wait_ms = static_cast<int>(std::min<long long>(left, 1000));
@@ -122,7 +138,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, double timeout_s
   }
   // Grandchildren still holding the group (a compiler's cc1plus) go with it.
   if (result.timed_out) kill(-pid, SIGKILL);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.exit_code = !result.timed_out && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
 
