@@ -120,6 +120,11 @@ TEST(ModelSession, ACrashIsReportedAndTheNextSaveRecovers) {
   ASSERT_FALSE(state["error"].is_null());
   EXPECT_EQ(state["error"]["kind"], "crash");
   EXPECT_EQ(state["error"]["step"], 2);
+  // The worker's own report: where in the model, and the step.
+  const std::string message = state["error"]["message"];
+  EXPECT_NE(message.find("plant.l:9: error: model crashed in production (SIGSEGV, null pointer) (step 2)"),
+            std::string::npos)
+      << message;
   EXPECT_EQ(state["step"], 1);  // the last good state stays on show
 
   write(dir + "/plant.l", kModel);
