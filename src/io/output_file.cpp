@@ -1,5 +1,8 @@
 #include "io/output_file.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -29,12 +32,18 @@ void write_in_place(const std::string& path, const std::string& content) {
 }
 
 // The file a chain of symbolic links ends at (`path` itself if it is no
-// link): an output written through a link leaves the link in place.
+// link): an output written through a link leaves the link in place. Only
+// links of the user's own (or root's) are followed: one planted by another
+// user in a shared folder must not lead the output onto the user's files.
 std::string end_of_links(const std::string& path) {
   fs::path at = path;
   for (int links = 0; links < 40; ++links) {  // as many as the kernel follows
+    struct stat link {};
+    if (::lstat(at.c_str(), &link) != 0 || !S_ISLNK(link.st_mode)) return at.string();
+    if (link.st_uid != ::geteuid() && link.st_uid != 0)
+      throw ModelError(SourceLocation{path, 0, 0},
+                       "cannot write the file: " + at.string() + " is a symbolic link of another user's");
     std::error_code ec;
-    if (!fs::is_symlink(fs::symlink_status(at, ec))) return at.string();
     const fs::path target = fs::read_symlink(at, ec);
     if (ec) cannot_write(path, ec.value());
     at = target.is_absolute() ? target : at.parent_path() / target;
@@ -57,14 +66,13 @@ void write_output_file(const std::string& path, const std::string& content) {
       standard_output_error(errno);
     return;
   }
-  const std::string target = end_of_links(path);
   std::error_code ec;
-  const auto status = fs::status(target, ec);
+  const auto status = fs::status(path, ec);
   if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
-    write_in_place(target, content);
+    write_in_place(path, content);
     return;
   }
-  if (const int error = write_file_atomically(target, content)) cannot_write(path, error);
+  if (const int error = write_file_atomically(end_of_links(path), content)) cannot_write(path, error);
 }
 
 void check_standard_output_at_exit() {

@@ -93,6 +93,27 @@ TEST(OutputFile, ASymbolicLinkIsWrittenThrough) {
   EXPECT_EQ(read_text(dir + "/real/made.txt"), "made\n");
 }
 
+TEST(OutputFile, ALinkToADeviceWritesTheDevice) {
+  namespace fs = std::filesystem;
+  const std::string dir = make_temp_dir("output-device-link");
+  fs::create_symlink("/dev/null", dir + "/null");
+  io::write_output_file(dir + "/null", "nothing\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir + "/null")));
+  EXPECT_EQ(entries(dir), 1u);
+}
+
+TEST(OutputFile, ALinkOfAnotherUsersIsNotFollowed) {
+  namespace fs = std::filesystem;
+  const std::string dir = make_temp_dir("output-foreign-link");
+  fs::create_symlink("mine.txt", dir + "/planted.txt");
+  const uid_t other = geteuid() == 65534 ? 65533 : 65534;
+  if (lchown((dir + "/planted.txt").c_str(), other, static_cast<gid_t>(-1)) != 0)
+    GTEST_SKIP() << "only root can give a link to another user";
+  EXPECT_THROW(io::write_output_file(dir + "/planted.txt", "x"), ModelError);
+  EXPECT_FALSE(fs::exists(dir + "/mine.txt"));
+  EXPECT_EQ(entries(dir), 1u);
+}
+
 TEST(OutputFile, ALoopOfLinksIsAnError) {
   namespace fs = std::filesystem;
   const std::string dir = make_temp_dir("output-symlink-loop");

@@ -72,6 +72,9 @@ TEST(ModelSession, StepsRunAndRewinds) {
   const WorkerMessage found = session.ask({{"op", "string"}, {"offset", 0}, {"limit", 2}, {"search", "B"}});
   EXPECT_EQ(found.json["items"].size(), 2u);
   EXPECT_EQ(found.json["matches"], json::array({1, 2}));
+  // An export is written in a private folder of its own, removed once read.
+  const WorkerMessage exported = session.ask({{"op", "export"}, {"format", "ply"}, {"view", 0}});
+  EXPECT_EQ(exported.payload.substr(0, 3), "ply");
 
   session.run_to(-1);
   state = session.state_json();
