@@ -148,8 +148,8 @@ void Derivation::track_lsystems(const StringView& src, std::size_t from, std::si
 }
 
 int Derivation::derivation_length() const {
-  return model_.derivation_length ? model_faults::call_model(site_of(model_, "derivation length"), model_.derivation_length)
-                                  : 0;
+  if (!model_.derivation_length) return 0;
+  return model_faults::call_model(site_of(model_, "derivation length"), model_.derivation_length);
 }
 
 // ---- control flow ------------------------------------------------------------
