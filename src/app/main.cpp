@@ -116,6 +116,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
 
 int main(int argc, char** argv) {
   if (argc == 2 && std::string(argv[1]) == sylva::app::kStudioWorkerCommand) return sylva::app::run_studio_worker();
+  sylva::io::check_standard_output_at_exit();
   CLI::App app{"Sylva: L-system plant modelling. Runs L+C models as lpfg does."};
   // Usage errors read like the others: "sylva: error: ...".
   app.failure_message([](const CLI::App* a, const CLI::Error& e) {

@@ -9,6 +9,7 @@
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
 #include "support/diagnostic.h"
+#include "support/model_faults.h"
 #include "sylva/predefined_ids.h"
 
 namespace sylva::derive {
@@ -37,6 +38,17 @@ bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rul
   return false;
 }
 
+// Where a call into the model is, for a fault there.
+model_faults::CallSite site_of(const abi::Rule& rule, int step) {
+  static constexpr const char* kKinds[] = {"production", "decomposition rule", "interpretation rule"};
+  const auto kind = static_cast<std::size_t>(rule.kind);
+  return {kind < std::size(kKinds) ? kKinds[kind] : "rule", rule.file, rule.line, step};
+}
+
+model_faults::CallSite site_of(const abi::ModelDescriptor& model, const char* statement) {
+  return {statement, model.source_file, 0, model.control->step};
+}
+
 // Marks a pass that applies rules: the string it reads must not be replaced.
 struct PassGuard {
   int& count;
@@ -48,6 +60,7 @@ struct PassGuard {
 
 Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     : model_(model), types_(ModuleTypes::from_model(model)), rules_(model), messages_(std::move(messages)) {
+  model_faults::install_handler();
   for (std::uint32_t r = 0; r < model.rule_count; ++r)
     if (pattern_length(model.rules[r]) > kMaxPattern)
       throw ModelError(SourceLocation{model.rules[r].file, model.rules[r].line, 0},
@@ -135,7 +148,8 @@ void Derivation::track_lsystems(const StringView& src, std::size_t from, std::si
 }
 
 int Derivation::derivation_length() const {
-  return model_.derivation_length ? model_.derivation_length() : 0;
+  if (!model_.derivation_length) return 0;
+  return model_faults::call_model(site_of(model_, "derivation length"), model_.derivation_length);
 }
 
 // ---- control flow ------------------------------------------------------------
@@ -153,7 +167,7 @@ void Derivation::start() {
   string_.clear();
   loaded_in_start_ = false;
   axiom_pending_ = true;
-  if (model_.start) model_.start();
+  if (model_.start) model_faults::call_model(site_of(model_, "Start"), model_.start);
 }
 
 void Derivation::make_axiom() {
@@ -167,7 +181,7 @@ void Derivation::make_axiom() {
   }
   if (!model_.axiom) throw ModelError(SourceLocation{model_.source_file, 0, 0}, "the model has no axiom");
   string_.clear();
-  model_.axiom(string_.buffer());
+  model_faults::call_model(site_of(model_, "the axiom"), [&] { model_.axiom(string_.buffer()); });
   reset_births(0);
   if (!(model_.flags & abi::kModelCpfg)) decompose();  // cpfg does not decompose the axiom
 }
@@ -193,7 +207,7 @@ void Derivation::start_each() {
   // StepNo() is the step's number (from 1) in its StartEach, productions and
   // EndEach.
   c.step = steps_done_ + 1;
-  if (model_.start_each) model_.start_each();
+  if (model_.start_each) model_faults::call_model(site_of(model_, "StartEach"), model_.start_each);
 }
 
 void Derivation::apply_productions() {
@@ -226,7 +240,7 @@ void Derivation::apply_productions() {
 }
 
 void Derivation::end_each() {
-  if (model_.end_each) model_.end_each();
+  if (model_.end_each) model_faults::call_model(site_of(model_, "EndEach"), model_.end_each);
 }
 
 void Derivation::decompose() {
@@ -243,7 +257,7 @@ void Derivation::decompose() {
 }
 
 void Derivation::end() {
-  if (model_.end) model_.end();
+  if (model_.end) model_faults::call_model(site_of(model_, "End"), model_.end);
 }
 
 void Derivation::run(int steps) {
@@ -367,7 +381,7 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
     in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left);
   in_body.attach(call);
   if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
-  rule.body(&call, params);
+  model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   if (!call.produced) {
     out.truncate(mark);  // no produce: the rule did not apply, and nproduce'd modules go
     return false;
@@ -402,7 +416,7 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
   InBodyContext in_body(src, skipped, left, right);
   in_body.set_new_right(new_string, new_right);
   in_body.attach(call);
-  rule.body(&call, params);
+  model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   if (!call.produced) return false;
   *consumed = at;
   return true;

@@ -3,8 +3,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -294,10 +297,12 @@ class Worker {
       return out;
     }
     // The writers write whole files (an OBJ with its MTL beside it): write
-    // into a folder of this worker's own and hand the bytes back.
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("sylva-studio-export-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    // into a folder of this worker's own (made new and private, so nothing
+    // another user put there is written through) and hand the bytes back.
+    std::string made = (std::filesystem::temp_directory_path() / "sylva-studio-export-XXXXXX").string();
+    if (!::mkdtemp(made.data()))
+      throw std::runtime_error(std::string("cannot make a folder for the export: ") + std::strerror(errno));
+    const std::filesystem::path dir = made;
     const std::string file_format = format == "mtl" ? "obj" : format;
     const std::filesystem::path path = dir / ("model." + file_format);
     check_output_path(path.string());

@@ -135,6 +135,15 @@ std::string WorkerProcess::reap() {
   close_fd(requests_);
   close_fd(answers_);
   if (console_thread_.joinable()) console_thread_.join();
+  // A fault in the model's code: the worker said where (support/model_faults.h).
+  if (WIFSIGNALED(status)) {
+    std::lock_guard lock(console_mutex_);
+    const std::size_t at = console_.rfind(": error: model crashed in ");
+    if (at != std::string::npos) {
+      const std::size_t begin = console_.rfind('\n', at) + 1;  // npos + 1: the first line
+      why = console_.substr(begin, console_.find('\n', at) - begin);
+    }
+  }
   return why;
 }
 

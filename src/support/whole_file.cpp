@@ -1,5 +1,7 @@
 #include "support/whole_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -26,20 +28,26 @@ WholeFile read_whole_file(const std::string& path) {
 int write_file_atomically(const std::string& path, std::string_view content) {
   const std::string tmp = path + ".tmp" + std::to_string(getpid());
   const interruption::TemporaryFile registered(tmp);
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) return errno;
-  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
-  int error = ok ? 0 : errno;
-  if (std::fclose(f) != 0 && ok) {
-    ok = false;
-    error = errno;
+  // A file replaced keeps its permissions; a new one gets the umask's. The
+  // temporary file has them from the start, so its content is never readable
+  // by more people than the file's.
+  struct stat old {};
+  const bool replacing = ::stat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode);
+  const mode_t mode = replacing ? old.st_mode & 0777 : 0666;
+  ::unlink(tmp.c_str());  // left by an earlier process of the same id
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+  if (fd < 0) return errno;
+  int error = 0;
+  if (replacing && ::fchmod(fd, mode) != 0) error = errno;  // what the umask took away
+  for (std::size_t done = 0; error == 0 && done < content.size();) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n >= 0) done += static_cast<std::size_t>(n);
+    else if (errno != EINTR) error = errno;
   }
-  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    error = errno;
-  }
-  if (!ok) std::remove(tmp.c_str());
-  return ok ? 0 : error;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
+  if (error != 0) ::unlink(tmp.c_str());
+  return error;
 }
 
 }  // namespace sylva

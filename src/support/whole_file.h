@@ -19,8 +19,9 @@ struct WholeFile {
 WholeFile read_whole_file(const std::string& path);
 
 // Writes `content` to a temporary file beside `path` and renames it over
-// `path` once complete, so readers never see half a file. Returns 0, or the
-// errno of what failed (the temporary file removed, `path` untouched).
+// `path` once complete, so readers never see half a file. A file replaced
+// keeps its permission bits. Returns 0, or the errno of what failed (the
+// temporary file removed, `path` untouched).
 int write_file_atomically(const std::string& path, std::string_view content);
 
 }  // namespace sylva

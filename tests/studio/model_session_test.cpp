@@ -72,6 +72,9 @@ TEST(ModelSession, StepsRunAndRewinds) {
   const WorkerMessage found = session.ask({{"op", "string"}, {"offset", 0}, {"limit", 2}, {"search", "B"}});
   EXPECT_EQ(found.json["items"].size(), 2u);
   EXPECT_EQ(found.json["matches"], json::array({1, 2}));
+  // An export is written in a private folder of its own, removed once read.
+  const WorkerMessage exported = session.ask({{"op", "export"}, {"format", "ply"}, {"view", 0}});
+  EXPECT_EQ(exported.payload.substr(0, 3), "ply");
 
   session.run_to(-1);
   state = session.state_json();
@@ -120,6 +123,11 @@ TEST(ModelSession, ACrashIsReportedAndTheNextSaveRecovers) {
   ASSERT_FALSE(state["error"].is_null());
   EXPECT_EQ(state["error"]["kind"], "crash");
   EXPECT_EQ(state["error"]["step"], 2);
+  // The worker's own report: where in the model, and the step.
+  const std::string message = state["error"]["message"];
+  EXPECT_NE(message.find("plant.l:9: error: model crashed in production (SIGSEGV, null pointer) (step 2)"),
+            std::string::npos)
+      << message;
   EXPECT_EQ(state["step"], 1);  // the last good state stays on show
 
   write(dir + "/plant.l", kModel);
