@@ -1,9 +1,12 @@
 // sylva — the command line over the engine's public API.
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -112,9 +115,19 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   return 0;
 }
 
+// A standard stream closed by whoever started us would be taken by the next
+// file or pipe opened (a compiler's output pipe becoming fd 1). Closed ones
+// are held by /dev/null, read-only, so a write to a closed standard output
+// still fails as it should.
+void hold_closed_standard_streams() {
+  for (int fd = 0; fd <= 2; ++fd)
+    if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) open("/dev/null", O_RDONLY);  // the lowest free: fd
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  hold_closed_standard_streams();
   if (argc == 2 && std::string(argv[1]) == sylva::app::kStudioWorkerCommand) return sylva::app::run_studio_worker();
   sylva::io::check_standard_output_at_exit();
   CLI::App app{"Sylva: L-system plant modelling. Runs L+C models as lpfg does."};
