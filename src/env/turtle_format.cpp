@@ -81,11 +81,11 @@ std::string format_turtle_values(const TurtleFormat& format, const float* values
       // past the range of long long, the nearest end of it (converting would
       // be undefined).
       const double whole = std::trunc(value);
-      long long as_int = 0;
-      if (!std::isfinite(whole)) as_int = 0;
-      else if (whole >= 0x1p63) as_int = std::numeric_limits<long long>::max();
-      else if (whole < -0x1p63) as_int = std::numeric_limits<long long>::min();
-      else as_int = static_cast<long long>(whole);
+      long long as_int = 0;  // for infinities and NaN
+      if (std::isfinite(whole))
+        as_int = whole >= 0x1p63    ? std::numeric_limits<long long>::max()
+                 : whole < -0x1p63 ? std::numeric_limits<long long>::min()
+                                   : static_cast<long long>(whole);
       std::string ll_spec = spec.substr(0, spec.size() - 1) + "ll" + spec.back();
       std::snprintf(buffer, sizeof buffer, ll_spec.c_str(), as_int);
     } else {

@@ -110,7 +110,7 @@ class Nested {
   explicit Nested(Cursor& c) : c_(c) {
     if (c_.nesting() >= kMaxNesting)
       c_.fail_at(peek_token(c_).pos, "nested more than " + std::to_string(kMaxNesting) +
-                         " levels deep (parentheses, operators, arguments or blocks)");
+                                         " levels deep (parentheses, operators, arguments or blocks)");
     ++c_.nesting();
   }
   ~Nested() { --c_.nesting(); }
