@@ -31,8 +31,9 @@ std::optional<LineMarker> parse_line_marker(std::string_view text) {
   if (i >= text.size() || !is_digit(text[i])) return std::nullopt;
   LineMarker marker;
   while (i < text.size() && is_digit(text[i])) {
-    marker.line = marker.line * 10 + (text[i++] - '0');
-    if (marker.line > kMaxLine) return std::nullopt;
+    const int digit = text[i++] - '0';
+    if (marker.line > (kMaxLine - digit) / 10) return std::nullopt;
+    marker.line = marker.line * 10 + digit;
   }
   if (!skip_blanks() || i >= text.size() || text[i] != '"') return std::nullopt;
   for (++i; i < text.size() && text[i] != '"'; ++i) {

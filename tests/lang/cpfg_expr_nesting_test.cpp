@@ -67,8 +67,8 @@ TEST(CpfgNesting, ParenthesesNestedAsDeepAsAModelNestsThemAreRead) {
 
 TEST(CpfgNesting, ThousandsOfParenthesesStopAtTheLevelPastTheLimit) {
   // The whole expression is level 1, each parenthesis one more: the 256th
-  // parenthesis, in column 256, opens level 257.
-  EXPECT_EQ(expression(repeated("(", 2000) + "x" + repeated(")", 2000)), error_at(256));
+  // parenthesis opens level 257, whose expression starts in column 257.
+  EXPECT_EQ(expression(repeated("(", 2000) + "x" + repeated(")", 2000)), error_at(257));
 }
 
 TEST(CpfgNesting, ChainsOfUnaryOperatorsStop) {
@@ -77,7 +77,7 @@ TEST(CpfgNesting, ChainsOfUnaryOperatorsStop) {
 }
 
 TEST(CpfgNesting, NestedArgumentsAndIndicesStop) {
-  EXPECT_EQ(expression(repeated("sin(", 5000) + "x" + repeated(")", 5000)), error_at(1021));
+  EXPECT_EQ(expression(repeated("sin(", 5000) + "x" + repeated(")", 5000)), error_at(1025));
   const Line line = line_of("a[" + repeated("a[", 3000) + "0" + repeated("]", 3001));
   Cursor c(line, kFiles);
   Scope scope;
@@ -86,20 +86,23 @@ TEST(CpfgNesting, NestedArgumentsAndIndicesStop) {
     lang::cpfg::expression(c, scope);
     ADD_FAILURE() << "no error";
   } catch (const ModelError& e) {
-    EXPECT_EQ(std::string(e.what()), error_at(511));
+    EXPECT_EQ(std::string(e.what()), error_at(513));
   }
 }
 
 TEST(CpfgNesting, ConditionalsNestedInTheirBranchesStop) {
-  EXPECT_EQ(expression(repeated("x ? 1 : ", 5000) + "0"), error_at(8 * 256 - 7));
+  // Level k's condition starts in column 8(k-1)+1 and its first branch, a
+  // level deeper, 4 columns on.
+  EXPECT_EQ(expression(repeated("x ? 1 : ", 5000) + "0"), error_at(8 * 255 + 5));
 }
 
 TEST(CpfgNesting, BlocksNestedInBlocksStop) {
-  // Each `if (x) {` is a statement (one level) whose condition is read one
-  // level deeper; 256 statements deep, the next one is refused.
-  EXPECT_EQ(statements(repeated("if (x) { ", 3000) + repeated("} ", 3001)), error_at(9 * 256 + 1));
-  EXPECT_EQ(statements(repeated("while (x) { ", 100) + repeated("} ", 101)),
-            repeated("while (v_x) { ", 100) + repeated(" } ", 100) + " ");
+  // Each `if (x) {` is a statement (one level) whose condition, 4 columns
+  // on, is read a level deeper: the 256th statement's condition is refused.
+  EXPECT_EQ(statements(repeated("if (x) { ", 3000) + repeated("} ", 3001)), error_at(9 * 255 + 5));
+  const std::string hundred = statements(repeated("while (x) { ", 100) + repeated("} ", 101));
+  EXPECT_EQ(hundred.find("error"), std::string::npos) << hundred;
+  EXPECT_EQ(hundred.rfind("while (v_x) { while (v_x) {", 0), 0u);
 }
 
 TEST(CpfgNesting, AProductionNestedTooDeepIsAnErrorAtItsLineAndColumn) {
