@@ -637,8 +637,7 @@ class CpfgParser {
     const std::string call = mangle("?", 2), ret = mangle("$", 0);
     if (blocks_.size() > 1 || module_index_.count(call)) {
       for (const auto& [label, at] : calls_) {
-        const bool known =
-            std::any_of(blocks_.begin(), blocks_.end(), [&label = label](const Block& b) { return b.label == label; });
+        const bool known = std::any_of(blocks_.begin(), blocks_.end(), [&label = label](const Block& b) { return b.label == label; });
         if (!known) {
           std::ostringstream text;
           text << "?(" << label << ",...) calls L-system " << label << ", but no 'Lsystem: " << label
