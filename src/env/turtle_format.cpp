@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 namespace sylva::env {
 namespace {
@@ -76,9 +77,15 @@ std::string format_turtle_values(const TurtleFormat& format, const float* values
     const double value = used < format.count ? values[used] : 0.0;
     ++used;
     if (is_one_of(spec.back(), kIntConversions)) {
-      // The integer part, as a C program passing an int would print it.
+      // The integer part, as a C program passing an int would print it;
+      // past the range of long long, the nearest end of it (converting would
+      // be undefined).
       const double whole = std::trunc(value);
-      const long long as_int = std::isfinite(whole) ? static_cast<long long>(whole) : 0;
+      long long as_int = 0;  // for infinities and NaN
+      if (std::isfinite(whole))
+        as_int = whole >= 0x1p63    ? std::numeric_limits<long long>::max()
+                 : whole < -0x1p63 ? std::numeric_limits<long long>::min()
+                                   : static_cast<long long>(whole);
       std::string ll_spec = spec.substr(0, spec.size() - 1) + "ll" + spec.back();
       std::snprintf(buffer, sizeof buffer, ll_spec.c_str(), as_int);
     } else {

@@ -34,8 +34,10 @@ class Path {
   int segments() const { return segments_; }
 
   Vec3 at(double s) const {
-    int seg = static_cast<int>(std::floor(s));
-    seg = std::clamp(seg, 0, segments_ - 1);
+    // Clamped before the conversion: points far enough apart make the arc
+    // length, and so s, infinite or NaN.
+    const double whole = std::isnan(s) ? 0.0 : std::clamp(std::floor(s), 0.0, static_cast<double>(segments_ - 1));
+    const int seg = static_cast<int>(whole);
     const float t = static_cast<float>(s - seg);
     const int n = static_cast<int>(p_.size());
     if (!spline_) return p_[seg] * (1 - t) + p_[(seg + 1) % n] * t;

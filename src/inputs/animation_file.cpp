@@ -74,15 +74,16 @@ std::vector<FrameInterval> read_intervals(const std::string& path, const std::ve
 std::vector<int> AnimationFile::frames(int derivation_length) const {
   if (!intervals.empty()) {
     std::set<int> steps;
+    // Counted in long long: a step past the last frame may pass INT_MAX.
     for (const FrameInterval& interval : intervals)
-      for (int s = std::max(interval.from, 0); s <= std::min(interval.to, derivation_length);
+      for (long long s = std::max(interval.from, 0); s <= std::min(interval.to, derivation_length);
            s += std::max(interval.step.value_or(step), 1))
-        steps.insert(s);
+        steps.insert(static_cast<int>(s));
     return {steps.begin(), steps.end()};
   }
   std::vector<int> steps;
   int last = std::min(last_frame.value_or(derivation_length), derivation_length);
-  for (int s = std::max(first_frame, 0); s <= last; s += std::max(step, 1)) steps.push_back(s);
+  for (long long s = std::max(first_frame, 0); s <= last; s += std::max(step, 1)) steps.push_back(static_cast<int>(s));
   return steps;
 }
 

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "inputs/input_text.h"
-#include "inputs/preprocessor.h"
 #include "support/default_compiler.h"
 
 namespace sylva::io {
@@ -53,9 +52,9 @@ struct SceneCommand {
 };
 
 // Keywords and the numbers after each, across lines, as cpfg's fscanf reads them.
-std::vector<SceneCommand> commands(const std::string& path, const std::string& compiler) {
+std::vector<SceneCommand> commands(const std::vector<PreprocessedLine>& lines) {
   std::vector<SceneCommand> out;
-  for (const PreprocessedLine& line : preprocess_file(path, compiler)) {
+  for (const PreprocessedLine& line : lines) {
     std::istringstream words(line.text);
     std::string word;
     while (words >> word) {
@@ -224,12 +223,19 @@ class Builder {
 
 BackgroundScene read_background_scene(const std::vector<std::string>& paths, const std::string& compiler,
                                       bool from_materials) {
-  BackgroundScene out;
-  Builder builder(out, from_materials);
+  std::vector<PreprocessedLine> lines;
   for (const std::string& path : paths) {
     read_input_file(path, "background scene file");
-    for (const SceneCommand& c : commands(path, compiler.empty() ? default_compiler() : compiler)) builder.run(c);
+    for (PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_compiler() : compiler))
+      lines.push_back(std::move(line));
   }
+  return parse_background_scene(lines, from_materials);
+}
+
+BackgroundScene parse_background_scene(const std::vector<PreprocessedLine>& lines, bool from_materials) {
+  BackgroundScene out;
+  Builder builder(out, from_materials);
+  for (const SceneCommand& c : commands(lines)) builder.run(c);
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include "geometry/material.h"
 #include "geometry/scene.h"
+#include "inputs/preprocessor.h"
 
 namespace sylva::io {
 
@@ -34,5 +35,7 @@ inline int background_color(int entry) { return geometry::Palette::kBankSize * (
 // unknown keyword or a command short of numbers is reported and skipped.
 BackgroundScene read_background_scene(const std::vector<std::string>& paths, const std::string& compiler,
                                       bool from_materials);
+// The same from the files' lines after the preprocessor, in order.
+BackgroundScene parse_background_scene(const std::vector<PreprocessedLine>& lines, bool from_materials);
 
 }  // namespace sylva::io

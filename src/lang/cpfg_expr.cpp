@@ -98,6 +98,29 @@ Tok next_token(Cursor& c) {
   return t;
 }
 
+// Expressions and statements are read by recursion, a level for each
+// parenthesis, unary operator, argument, index, conditional branch and block.
+// Far deeper than any model nests, the nesting is an error where it gets too
+// deep, before the machine stack runs out.
+constexpr int kMaxNesting = 256;
+
+class Nested {
+ public:
+  // At the next token, which opens the level.
+  explicit Nested(Cursor& c) : c_(c) {
+    if (c_.nesting() >= kMaxNesting)
+      c_.fail_at(peek_token(c_).pos, "nested more than " + std::to_string(kMaxNesting) +
+                                         " levels deep (parentheses, operators, arguments or blocks)");
+    ++c_.nesting();
+  }
+  ~Nested() { --c_.nesting(); }
+  Nested(const Nested&) = delete;
+  Nested& operator=(const Nested&) = delete;
+
+ private:
+  Cursor& c_;
+};
+
 std::string describe(const Tok& t) {
   if (t.kind == Tok::kEnd) return "the end of the line";
   return "'" + t.text + "'";
@@ -310,6 +333,7 @@ std::string primary(Cursor& c, Scope& scope) {
 std::string unary(Cursor& c, Scope& scope) {
   Tok t = peek_token(c);
   if (t.kind == Tok::kOp && (t.text == "-" || t.text == "+" || t.text == "!")) {
+    const Nested operand(c);
     next_token(c);
     return "(" + t.text + unary(c, scope) + ")";
   }
@@ -354,6 +378,7 @@ std::string binary_level(Cursor& c, Scope& scope, int level) {
 }
 
 std::string ternary(Cursor& c, Scope& scope) {
+  const Nested nested(c);
   std::string cond = binary_level(c, scope, 0);
   if (peek_token(c).text != "?") return cond;
   next_token(c);
@@ -369,6 +394,7 @@ std::string block(Cursor& c, Scope& scope) {
 }
 
 std::string statement(Cursor& c, Scope& scope) {
+  const Nested nested(c);
   Tok t = next_token(c);
   if (t.kind == Tok::kIdent && t.text == "if") {
     expect_op(c, "(");

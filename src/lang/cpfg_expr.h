@@ -57,6 +57,9 @@ class Cursor {
   [[noreturn]] void fail(const std::string& message) const;
   [[noreturn]] void fail_at(Pos p, const std::string& message) const { throw ModelError(location(p), message); }
   const std::string& text() const { return line_.text; }
+  // How deeply the expression or statement being read is nested (cpfg_expr.cpp
+  // bounds it).
+  int& nesting() { return nesting_; }
   void warn_at(Pos p, const std::string& message) const {
     if (!warnings_) return;
     const SourceLocation at = location(p);
@@ -69,6 +72,7 @@ class Cursor {
   const std::vector<std::string>& files_;
   std::vector<std::string>* warnings_;
   std::size_t i_ = 0;
+  int nesting_ = 0;
 };
 
 // Names an expression may use.

@@ -1,10 +1,16 @@
 #include "support/line_marker.h"
 
+#include <algorithm>
+
 namespace sylva {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// No preprocessor numbers real lines this far; refusing larger numbers keeps
+// the count of the lines after a marker within int.
+constexpr int kMaxLine = 1 << 30;
 
 }  // namespace
 
@@ -24,7 +30,11 @@ std::optional<LineMarker> parse_line_marker(std::string_view text) {
   }
   if (i >= text.size() || !is_digit(text[i])) return std::nullopt;
   LineMarker marker;
-  while (i < text.size() && is_digit(text[i])) marker.line = marker.line * 10 + (text[i++] - '0');
+  while (i < text.size() && is_digit(text[i])) {
+    const int digit = text[i++] - '0';
+    if (marker.line > (kMaxLine - digit) / 10) return std::nullopt;
+    marker.line = marker.line * 10 + digit;
+  }
   if (!skip_blanks() || i >= text.size() || text[i] != '"') return std::nullopt;
   for (++i; i < text.size() && text[i] != '"'; ++i) {
     if (text[i] == '\\' && i + 1 < text.size()) ++i;
@@ -34,7 +44,7 @@ std::optional<LineMarker> parse_line_marker(std::string_view text) {
   ++i;
   while (skip_blanks(), i < text.size() && is_digit(text[i])) {
     int flag = 0;
-    while (i < text.size() && is_digit(text[i])) flag = flag * 10 + (text[i++] - '0');
+    while (i < text.size() && is_digit(text[i])) flag = std::min(flag * 10 + (text[i++] - '0'), 10);  // 1..4 only
     if (flag == 1) marker.enters_file = true;
     if (flag == 3) marker.system_header = true;
   }

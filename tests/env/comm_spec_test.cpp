@@ -4,6 +4,7 @@
 // which point at the file, line and column.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "env/comm_spec.h"
@@ -151,6 +152,15 @@ TEST(TurtleFormat, FormatsValuesAsPrintfWould) {
   EXPECT_EQ(f.count, 3);
   const float values[3] = {1.5f, -0.25f, 7.9f};
   EXPECT_EQ(format_turtle_values(f, values), "P:1.500 -0.25 100% 7");
+}
+
+TEST(TurtleFormat, AnIntegerPastTheRangeOfLongLongIsItsNearestEnd) {
+  TurtleFormat f;
+  std::string error;
+  std::size_t column = 0;
+  ASSERT_TRUE(parse_turtle_format("%d %i %d", 3, f, error, column));
+  const float values[3] = {-2e30f, 2e30f, INFINITY};
+  EXPECT_EQ(format_turtle_values(f, values), "-9223372036854775808 9223372036854775807 0");
 }
 
 }  // namespace

@@ -59,5 +59,15 @@ TEST(LineMarker, OtherLinesAreNotMarkers) {
   EXPECT_FALSE(parse_line_marker("#lines 3 \"x\""));
 }
 
+TEST(LineMarker, LineNumbersPastAnyRealFileAreNotMarkers) {
+  EXPECT_TRUE(parse_line_marker("# 1073741824 \"x\""));
+  EXPECT_FALSE(parse_line_marker("# 1073741825 \"x\""));
+  EXPECT_FALSE(parse_line_marker("# 777777777777777777777 \"x\""));
+  std::optional<LineMarker> m = parse_line_marker("# 3 \"x\" 99999999999999999999 1");
+  ASSERT_TRUE(m);
+  EXPECT_TRUE(m->enters_file);
+  EXPECT_FALSE(m->system_header);
+}
+
 }  // namespace
 }  // namespace sylva

@@ -1,0 +1,3 @@
+eturtle left:ensi¬ty sierpinski.par
+communicaturtle up:tioj type: pip#s
+turtle position: $g %g %d%g

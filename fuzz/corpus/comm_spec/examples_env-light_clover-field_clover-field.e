@@ -1,0 +1,3 @@
+executable: clover -e clover-field.e clover.par
+communication type: pipes
+turtle position: %g %g %g

@@ -1,0 +1,3 @@
+executable: density sierpinski.par
+communication type: pipes
+turtle position: %g %g %g

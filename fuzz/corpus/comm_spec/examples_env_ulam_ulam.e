@@ -1,0 +1,3 @@
+executable: density ulam.par
+communication type: pipes
+turtle position: %g %g %g

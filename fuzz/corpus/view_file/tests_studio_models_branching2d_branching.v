@@ -1,0 +1,2 @@
+/* Seen from the front, lines one pixel wide. */
+projection: parallel

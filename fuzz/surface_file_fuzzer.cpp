@@ -1,0 +1,9 @@
+// Bézier surface files (.s).
+#include "fuzz_support.h"
+#include "inputs/surface_file.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static sylva::fuzz::InputFile file;
+  sylva::fuzz::reading([&] { sylva::io::read_surface_file(file.holding(data, size)); });
+  return 0;
+}
