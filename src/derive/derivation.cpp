@@ -8,6 +8,7 @@
 
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
+#include "lstring/run_limits.h"
 #include "support/diagnostic.h"
 #include "support/model_faults.h"
 #include "sylva/predefined_ids.h"
@@ -249,9 +250,10 @@ void Derivation::decompose() {
   depth_warnings_.clear();  // warned once per pass, as lpfg does
   next_.clear();
   rewrites_.clear();
-  int depth = model_.decomposition_depth ? model_.decomposition_depth() : 1;
+  const int depth = maximum_depth(RuleKind::Decomposition);
   reset_lsystems();
   expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
+  release_deep_expansion();
   std::swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
 }
@@ -291,7 +293,7 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
   view_ = view;
   const StringView src = current_view();
   const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
-  const int depth = has_rules && model_.interpretation_depth ? model_.interpretation_depth() : 1;
+  const int depth = has_rules ? maximum_depth(RuleKind::Interpretation) : 1;
   if (has_rules) depth_warnings_.clear();
   while (expansion_scratch_.empty()) expansion_scratch_.emplace_back();
   reset_lsystems();
@@ -322,6 +324,7 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
     ++index;
     pos = src.next(pos);
   }
+  release_deep_expansion();
 }
 
 void Derivation::write_parameters(const ParameterWrites& writes) {
@@ -445,7 +448,11 @@ void Derivation::derive_forward() {
   next_.clear();
   // Expect the string to grow as much as in the previous step, so it is
   // allocated once rather than copied on every doubling.
-  next_.reserve(static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256);
+  // Near the run's memory limit only what is affordable: the limit is
+  // reached by what the step writes, not by what it might.
+  const auto expected = static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256;
+  const RunBudget* budget = RunBudget::active();
+  next_.reserve(budget ? budget->affordable(expected) : expected);
   std::size_t pos = src.begin;
   std::size_t run = pos;  // modules from `run` to `pos` are copied unchanged
   auto flush = [&] {
@@ -533,42 +540,92 @@ void Derivation::derive_backward() {
 // ---- decomposition and interpretation -----------------------------------------
 
 void Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out) {
-  while (expansion_scratch_.size() <= static_cast<std::size_t>(depth)) expansion_scratch_.emplace_back();
-  ModuleString& successor = expansion_scratch_[static_cast<std::size_t>(depth)];
-  std::size_t pos = source.begin;
+  // An explicit stack of the levels being written out rather than recursion,
+  // so that a depth of millions needs no machine stack. A level's
+  // successors are built in the scratch string of its place on the stack,
+  // which stays untouched while the levels below read their own.
+  std::vector<ExpansionFrame>& frames = expansion_frames_;
+  frames.clear();
+  StringView src = source;
+  std::size_t pos = src.begin;
   std::size_t run = pos;
   auto flush = [&] {
-    if (pos > run) out.append(source.data + run, pos - run);
+    if (pos > run) out.append(src.data + run, pos - run);
   };
+  // Where the current level builds a successor: the scratch string after its source's.
+  auto scratch_below = [&] {
+    while (expansion_scratch_.size() <= frames.size() + 1) expansion_scratch_.emplace_back();
+    return &expansion_scratch_[frames.size() + 1];
+  };
+  ModuleString* successor = scratch_below();
   // The L-system stack follows the string as it is written out: modules
-  // kept as they are here, successors in the recursive call.
-  while (pos < source.end) {
-    const ModuleId id = source.id_at(pos);
+  // kept as they are here, successors one level down.
+  for (;;) {
+    if (pos >= src.end) {
+      flush();
+      if (frames.empty()) break;
+      // Back to the level above, past the predecessor just expanded.
+      const ExpansionFrame up = frames.back();
+      frames.pop_back();
+      src = up.source;
+      depth = up.depth;
+      if (depth == 0 && kind == RuleKind::Decomposition)
+        note_rewrite(up.pos, up.resume, out.size_bytes() - up.output_before);
+      pos = run = up.resume;
+      successor = scratch_below();
+      continue;
+    }
+    const ModuleId id = src.id_at(pos);
     if (rules_.forward(kind, id).empty()) {
-      if (sub_lsystems_) track_lsystem(id, module_params(source.data, pos));
-      pos = source.next(pos);
+      if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
+      pos = src.next(pos);
       continue;
     }
     flush();
     std::size_t consumed = 0;
     if (depth >= max_depth) {
-      if (apply_forward(kind, source, pos, successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
     } else {
-      successor.clear();
-      if (apply_forward(kind, source, pos, successor, out, true, &consumed)) {
-        const std::size_t output_before = out.size_bytes();
-        expand(kind, successor.view(types_), depth + 1, max_depth, out);
-        if (depth == 0 && kind == RuleKind::Decomposition) note_rewrite(pos, consumed, out.size_bytes() - output_before);
-        pos = run = consumed;
+      successor->clear();
+      if (apply_forward(kind, src, pos, *successor, out, true, &consumed)) {
+        if (consumed == src.end && !frames.empty()) {
+          // The level ends with this successor: it is replaced rather than
+          // kept waiting, so a chain of last modules (A --> B A) takes no
+          // more memory however deep it goes.
+          std::swap(expansion_scratch_[frames.size()], *successor);
+        } else {
+          frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth});
+        }
+        ++depth;
+        src = expansion_scratch_[frames.size()].view(types_);
+        pos = run = src.begin;
+        successor = scratch_below();
         continue;
       }
     }
-    if (sub_lsystems_) track_lsystem(id, module_params(source.data, pos));
-    const std::size_t n = source.next(pos);
-    out.append(source.data + pos, n - pos);
+    if (sub_lsystems_) track_lsystem(id, module_params(src.data, pos));
+    const std::size_t n = src.next(pos);
+    out.append(src.data + pos, n - pos);
     pos = run = n;
   }
-  flush();
+}
+
+void Derivation::release_deep_expansion() {
+  // A pass that went very deep leaves no lasting memory behind.
+  constexpr std::size_t kKept = 64;
+  if (expansion_scratch_.size() > kKept) expansion_scratch_.resize(kKept);
+  if (expansion_frames_.capacity() > kKept) std::vector<ExpansionFrame>().swap(expansion_frames_);
+}
+
+int Derivation::maximum_depth(RuleKind kind) const {
+  int (*setting)() = kind == RuleKind::Decomposition ? model_.decomposition_depth : model_.interpretation_depth;
+  const int depth = setting ? setting() : 1;
+  // A number written out is checked where it is written; a computed one here.
+  if (depth < 0)
+    throw ModelError(SourceLocation{model_.source_file, 0, 0},
+                     std::string("the maximum ") + (kind == RuleKind::Decomposition ? "decomposition" : "interpretation") +
+                         " depth is negative (" + std::to_string(depth) + "); it must be 0 or more");
+  return depth;
 }
 
 void Derivation::warn_depth_reached(RuleKind kind, ModuleId id, int max_depth) {

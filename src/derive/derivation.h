@@ -153,9 +153,18 @@ class Derivation {
   void derive_backward();
   // One step of a Gillespie group (gillespie_step.cpp): one reaction fires.
   void derive_gillespie();
-  // Decomposition or interpretation: rules applied recursively to each module
-  // and its successors, up to max_depth levels.
+  // Decomposition or interpretation: rules applied to each module and again
+  // to its successors, up to max_depth levels, without recursion.
   void expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out);
+  // A level of expand() waiting for the successor it expanded to be written.
+  struct ExpansionFrame {
+    StringView source;
+    std::size_t pos;            // the predecessor expanded
+    std::size_t resume;         // past it
+    std::size_t output_before;  // the output's size when its successor began
+    int depth;
+  };
+  void release_deep_expansion();
 
   // Tries the rules for the module at `pos`; on success returns true with
   // `*consumed` the offset past the strict predecessor.
@@ -167,6 +176,8 @@ class Derivation {
   bool try_backward(const abi::Rule& rule, const StringView& src, std::size_t end, const StringView& new_string,
                     std::size_t* consumed);
 
+  // The model's maximum depth setting (1 without one).
+  int maximum_depth(abi::RuleKind kind) const;
   void warn_depth_reached(abi::RuleKind kind, ModuleId id, int max_depth);
   void message(const std::string& text) const;
 
@@ -184,7 +195,8 @@ class Derivation {
   ModuleString successor_;  // backward derivation builds each successor here
   ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;
-  std::deque<ModuleString> expansion_scratch_;  // one per decomposition depth
+  std::deque<ModuleString> expansion_scratch_;  // one per level of expand()'s stack
+  std::vector<ExpansionFrame> expansion_frames_;
   std::set<std::pair<int, ModuleId>> depth_warnings_;
   int steps_done_ = 0;
   bool ring_ = false;

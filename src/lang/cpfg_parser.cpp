@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "lang/cpfg_expr.h"
 #include "lang/cpfg_lines.h"
 #include "lang/cpfg_random_code.h"
+#include "lang/literal_numbers.h"
 
 namespace sylva::lang {
 namespace {
@@ -195,7 +198,9 @@ class CpfgParser {
       while (std::isdigit(static_cast<unsigned char>(c.peek()))) digits += c.get();
       c.skip_space();
       if (!c.done()) c.fail_at(lp, "expected an integer label after 'Lsystem:'");
-      const int label = digits.empty() ? 0 : std::stoi(digits);
+      const std::optional<int> read = digits.empty() ? 0 : nonnegative_int(digits);
+      if (!read) c.fail_at(lp, "the L-system label " + digits + " is too large (at most " + std::to_string(INT_MAX) + ")");
+      const int label = *read;
       for (const Block& b : blocks_)
         if (b.label == label) c.fail_at(lp, "a second L-system with label " + std::to_string(label));
       Block block;
@@ -250,6 +255,10 @@ class CpfgParser {
         c.fail_at(at, "a homomorphism's seed: comes before its productions");
       // An expression, taken as an integer.
       Scope scope = new_scope();
+      c.skip_space();
+      const std::size_t first = c.at();
+      if (const std::string error = range_error("the seed", c.text().substr(first), true); !error.empty())
+        c.fail_at(c.pos_at(first), error);
       const std::string seed = "static_cast<long>(static_cast<int>(" + cpfg::expression(c, scope) + "))";
       if (!c.done()) c.fail("expected the end of the seed: statement");
       globals_.insert(scope.locals.begin(), scope.locals.end());
@@ -291,6 +300,10 @@ class CpfgParser {
 
   void setting(Cursor& c, Pos at, Setting::Kind kind) {
     Scope scope = new_scope();
+    c.skip_space();
+    const std::size_t first = c.at();
+    const std::string written = c.text().substr(first);
+    if (const std::string error = setting_range_error(kind, written); !error.empty()) c.fail_at(c.pos_at(first), error);
     std::string e = cpfg::expression(c, scope);
     if (!c.done()) c.fail("expected the end of the statement");
     globals_.insert(scope.locals.begin(), scope.locals.end());  // unknown names read as 0

@@ -5,11 +5,13 @@
 #include "lang/lc_parser.h"
 
 #include <algorithm>
+#include <climits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "lang/lc_parser_impl.h"
+#include "lang/literal_numbers.h"
 
 namespace sylva::lang {
 namespace detail {
@@ -92,7 +94,7 @@ bool LcParser::parse_construct() {
     // Interpretation rules of one view (7.3); the view names of the view
     // file's window: commands are defined as numbers.
     flush_code();
-    view_ = std::stoi(peek(1).text, nullptr, 0);
+    view_ = whole_number(peek(1), "a view");
     i_ += 3;
     return true;
   }
@@ -119,7 +121,7 @@ bool LcParser::parse_construct() {
 void LcParser::open_group(bool gillespie) {
   flush_code();
   const Token& number = peek(1);
-  const int group = std::stoi(number.text, nullptr, 0);
+  const int group = whole_number(number, "a group");
   const std::string name = std::to_string(group);
   if (gillespie && group == 0) fail(number, "group 0 is the main group and cannot be a Gillespie group");
   auto holds = [group](const std::vector<int>& list) {
@@ -205,11 +207,21 @@ Code LcParser::parse_expression_until_semicolon(const std::string& what) {
   return expr;
 }
 
+int LcParser::whole_number(const Token& number, const std::string& what) const {
+  const std::optional<int> value = nonnegative_int(number.text);
+  if (!value)
+    fail(number, "expected " + what + " number from 0 to " + std::to_string(INT_MAX) + ", found " + number.text);
+  return *value;
+}
+
 void LcParser::parse_setting(Setting::Kind kind, int keyword_tokens) {
   flush_code();
   Token at = peek();
   i_ += keyword_tokens;
   Code expr = parse_expression_until_semicolon(at.text);
+  std::string text;
+  for (const Token& t : expr) text += (t.space_before && !text.empty() ? " " : "") + t.text;
+  if (const std::string error = setting_range_error(kind, text); !error.empty()) fail(expr.front(), error);
   model_.items.emplace_back(Setting{kind, std::move(expr), at});
 }
 

@@ -88,6 +88,8 @@ class LcParser {
   void parse_module_decl();
   Code parse_expression_until_semicolon(const std::string& what);
   void parse_setting(Setting::Kind kind, int keyword_tokens);
+  // A group's or a view's number; `what` names it ("a group").
+  int whole_number(const Token& number, const std::string& what) const;
   void switch_block(RuleKind kind);
   void parse_filter();
   void parse_verify_string();
