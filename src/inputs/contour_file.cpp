@@ -21,7 +21,7 @@ geometry::Contour read_first_version(WordReader& in, const std::string& name) {
   contour.name = name;
   contour.curve = geometry::Contour::Curve::BSpline;
   Word count_word = in.peek();
-  int count = in.integer("the number of points");
+  int count = in.integer_at_most("the number of points", kMaxPoints);
   if (count < 2) in.fail(count_word, "expected at least 2 points, found " + count_word.text);
   Word dim_word = in.peek();
   int dim = in.integer("the dimension (2 or 3)");
@@ -77,7 +77,7 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
     } else if (key == "points:") {
       if (count >= 0) in.fail(key_word, "the points are given twice");
       Word count_word = in.peek();
-      count = in.integer("the number of control points");
+      count = in.integer_at_most("the number of control points", kMaxPoints);
       if (count < 1) in.fail(count_word, "expected at least 1 control point, found " + count_word.text);
       in.integer("the sum of the multiplicities");
     } else if (key == "type:") {
@@ -85,7 +85,7 @@ geometry::Contour read_cuspy(WordReader& in, const std::string& default_name) {
       have_type = true;
     } else if (key == "samples:") {
       Word samples_word = in.peek();
-      contour.samples = in.integer("the number of samples");
+      contour.samples = in.integer_at_most("the number of samples", kMaxSamples);
       if (contour.samples < 1)
         in.fail(samples_word, "expected a positive number of samples, found '" + samples_word.text + "'");
     } else {

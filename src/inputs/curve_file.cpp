@@ -32,7 +32,7 @@ geometry::Contour read_cpfg_curve(WordReader& in, const std::string& name) {
     } else if (k == "points:") {
       if (count >= 0) in.fail(key, "curves within a curve are not supported");
       Word count_word = in.peek();
-      count = in.integer("the number of points");
+      count = in.integer_at_most("the number of points", kMaxPoints);
       if (count < 1) in.fail(count_word, "expected a positive number of points, found '" + count_word.text + "'");
     } else if (k == "dim:" || k == "dimension:") {
       Word at = in.peek();
@@ -60,7 +60,14 @@ geometry::Contour read_cpfg_curve(WordReader& in, const std::string& name) {
     p.y = in.number(what + " (y)");
     int multiplicity = 1;
     if (dimension > 2) p.z = in.number(what + " (z)");
-    if (dimension > 3) multiplicity = std::max(0, static_cast<int>(in.number(what + " (multiplicity)")));
+    if (dimension > 3) {
+      const Word at = in.peek();
+      const float m = in.number(what + " (multiplicity)");
+      if (m >= kMaxMultiplicity)
+        in.fail(at, "the multiplicity of " + what + " is past the limit of " + std::to_string(kMaxMultiplicity) +
+                        ", far above any real curve's (is the file damaged?)");
+      multiplicity = std::max(0, static_cast<int>(m));
+    }
     curve.points.insert(curve.points.end(), static_cast<std::size_t>(multiplicity), p);
   }
   if (phantom && curve.points.size() >= 2) {

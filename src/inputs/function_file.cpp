@@ -18,7 +18,7 @@ void skip_rest_of_line(WordReader& in, const Word& key) {
 // point repeated, as lpfg and cpfg read it: a number, truncated).
 void read_points(WordReader& in, geometry::Function& function) {
   Word count_word = in.peek();
-  int count = in.integer("the number of control points");
+  int count = in.integer_at_most("the number of control points", kMaxPoints);
   if (count < kMinimumPoints)
     in.fail(count_word, "expected at least 4 control points, found " + count_word.text);
   for (int i = 0; i < count; ++i) {
@@ -62,7 +62,7 @@ geometry::Function read_funcedit(WordReader& in, const std::string& default_name
       function.name = in.rest_of_line("the function's name");
     } else if (key == "samples:") {
       // lpfg keeps 10 to 1000 of them (LpfgFunction clamps), cpfg any number.
-      function.samples = in.integer("the number of samples");
+      function.samples = in.integer_at_most("the number of samples", kMaxSamples);
     } else if (key == "flip:") {
       Word flag = in.next("on or off");
       if (!parse_flag(flag.text)) in.fail(flag, "expected on or off, found '" + flag.text + "'");
@@ -72,7 +72,7 @@ geometry::Function read_funcedit(WordReader& in, const std::string& default_name
     } else if (key == "markers:") {
       // Marked points of the editor (cpfg reads past them): "mK x y" each.
       Word count_word = in.peek();
-      int markers = in.integer("the number of markers");
+      int markers = in.integer_at_most("the number of markers", kMaxPoints);
       if (markers < 0) in.fail(count_word, "expected a number of markers, found '" + count_word.text + "'");
       for (int m = 0; m < markers; ++m) skip_rest_of_line(in, in.next("a marker"));
     } else if (skip_editor_background(in, key)) {

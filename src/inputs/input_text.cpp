@@ -132,6 +132,15 @@ int WordReader::integer(std::string_view what) {
   return *parse_int(words_[next_++].text);
 }
 
+int WordReader::integer_at_most(std::string_view what, int most) {
+  const Word at = peek();
+  const int value = integer(what);
+  if (value > most)
+    fail(at, std::string(what) + " " + at.text + " is past the limit of " + std::to_string(most) +
+                 ", far above any real model's (is the file damaged?)");
+  return value;
+}
+
 geometry::Vec3 WordReader::vec3(std::string_view what) {
   std::string w(what);
   float x = number(w + " (x)");

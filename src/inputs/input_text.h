@@ -42,6 +42,16 @@ std::vector<Word> split_words(std::string_view line, int line_number);
 
 // The words of a whole file, read in order, with the helpers the readers
 // need to say what they expected where.
+// Sizes an input file may give, far above any real model's (the editors
+// write tens of points and samples, surfaces of a few subdivisions): a file
+// past them is damaged, and would otherwise make a run allocate gigabytes.
+inline constexpr int kMaxPoints = 1'000'000;      // control points of a contour, function or curve
+inline constexpr int kMaxSamples = 100'000;       // samples of a contour or function, sides of a contour
+inline constexpr int kMaxMultiplicity = 1000;     // copies of one control point
+inline constexpr int kMaxSubdivisions = 1000;     // of a surface patch, each way
+inline constexpr int kMaxInputId = 10'000;        // a contour's or a function's number in a view file
+inline constexpr int kMaxShadowMapSize = 16384;   // pixels, each way
+
 class WordReader {
  public:
   WordReader(std::string file, std::string_view content);
@@ -55,6 +65,10 @@ class WordReader {
 
   float number(std::string_view what);
   int integer(std::string_view what);
+  // A whole number of at most `most`: the sizes a file gives (points,
+  // samples, subdivisions) are bounded far above any real model's, so that a
+  // damaged file is refused at its line rather than allocated.
+  int integer_at_most(std::string_view what, int most);
   geometry::Vec3 vec3(std::string_view what);
   // The next word must be `keyword` (compared ignoring case).
   void expect(std::string_view keyword);

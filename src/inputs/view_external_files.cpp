@@ -36,7 +36,7 @@ void Parser::surface(WordReader& in) {
     const float scale = in.number("the surface scale");
     s.scale = scale > 0 ? scale : 1;
     std::vector<int> numbers;
-    while (numbers.size() < 3 && in.next_is_number()) numbers.push_back(in.integer("a number of subdivisions or a texture id"));
+    while (numbers.size() < 3 && in.next_is_number()) numbers.push_back(in.integer_at_most("a number of subdivisions or a texture id", kMaxSubdivisions));
     if (numbers.size() == 1) s.texture = numbers[0];
     if (numbers.size() >= 2) s.s_divisions = numbers[0], s.t_divisions = numbers[1];
     if (numbers.size() == 3) s.texture = numbers[2];
@@ -46,8 +46,8 @@ void Parser::surface(WordReader& in) {
     if (!in.at_end()) s.scale = positive(in, "the surface scale");
     if (!in.at_end()) {
       Word sw = in.peek();
-      s.s_divisions = in.integer("the subdivisions along s");
-      s.t_divisions = in.integer("the subdivisions along t (sdiv and tdiv go together)");
+      s.s_divisions = in.integer_at_most("the subdivisions along s", kMaxSubdivisions);
+      s.t_divisions = in.integer_at_most("the subdivisions along t (sdiv and tdiv go together)", kMaxSubdivisions);
       if (s.s_divisions < 1 || s.t_divisions < 1) in.fail(sw, "expected positive numbers of subdivisions");
     }
     if (!in.at_end()) {
@@ -125,7 +125,7 @@ void Parser::mesh(WordReader& in) {
 void Parser::contour(WordReader& in) {
   ContourCommand c;
   Word id = in.peek();
-  c.id = in.integer("the contour id");
+  c.id = in.integer_at_most("the contour id", kMaxInputId);
   if (c.id < 1) in.fail(id, "expected a contour id of 1 or more (0 is cpfg's circle), found '" + id.text + "'");
   name_file(c, in.next("a contour file name"), view_.path);
   view_.contour_files.push_back(c);
@@ -136,7 +136,7 @@ void Parser::contour(WordReader& in) {
 void Parser::function(WordReader& in) {
   FunctionCommand f;
   name_file(f, in.next("a function file name"), view_.path);
-  if (in.next_is_number()) f.samples = in.integer("the number of samples");
+  if (in.next_is_number()) f.samples = in.integer_at_most("the number of samples", kMaxSamples);
   view_.function_files.push_back(f);
 }
 
@@ -154,7 +154,7 @@ void Parser::curve(WordReader& in) {
   FunctionCommand c;
   name_file(c, in.next("a curve file name"), view_.path);
   c.samples = 100;  // cpfg's default
-  if (in.next_is_number()) c.samples = in.integer("the number of samples");
+  if (in.next_is_number()) c.samples = in.integer_at_most("the number of samples", kMaxSamples);
   view_.curve_files.push_back(c);
 }
 

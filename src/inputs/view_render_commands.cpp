@@ -91,7 +91,7 @@ void Parser::shadow_map(WordReader& in) {
     if (k.ends_with(":")) k.pop_back();  // cpfg reads its keys with or without the colon
     if (k == "size") {
       Word at = in.peek();
-      s.size = in.integer("the shadow map size");
+      s.size = in.integer_at_most("the shadow map size", kMaxShadowMapSize);
       if (s.size <= 0) in.fail(at, "expected a positive shadow map size, found '" + at.text + "'");
       if (s.size % 2 != 0) {
         warn(at, "the shadow map size should be even; " + std::to_string(s.size + 1) + " is used, as lpfg and cpfg do");

@@ -10,7 +10,7 @@ namespace sylva::io {
 
 void Parser::contour_sides(WordReader& in) {
   Word at = in.peek();
-  const int n = in.integer("the number of sides");
+  const int n = in.integer_at_most("the number of sides", kMaxSamples);
   const int least = 3, most = cpfg() ? n : 10000;  // lpfg's limits
   view_.contour_sides = std::clamp(n, least, std::max(least, most));
   if (view_.contour_sides != n)
@@ -20,7 +20,7 @@ void Parser::contour_sides(WordReader& in) {
 
 // cpfg's older form: 2^(level + 1) sides, at least 3.
 void Parser::polygonization_level(WordReader& in) {
-  const int level = in.integer("the polygonization level");
+  const int level = in.integer_at_most("the polygonization level", 16);  // 2^17 sides
   view_.contour_sides = std::max(3, static_cast<int>(std::lround(std::pow(2.0, level + 1))));
 }
 
