@@ -85,6 +85,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
     turtle_settings_.cpfg_symbols = std::move(symbols);
   }
   start_environment(options.environment, options.input_files);
+  budget_.set_limits(options.limits);
+  budget_.set_module_sizes(derivation_->types().encoded_sizes());
 }
 
 Simulation::Simulation(const std::string& model_path, const build::BuildOptions& options, MessageSink messages)
@@ -147,17 +149,24 @@ void Simulation::begin() {
   pending_frames_.clear();
   display_requested_ = false;
   requests_->clear();
+  budget_.start_clock();
+  budget_.set_step(0);
+  RunBudget::Scope bounded(budget_);
   answers_->restore_curves();  // a run starts from the curves as read, whatever the last run did to them
   derivation_->start();
   act_on_requests(RequestSource::ControlStatement);  // LoadString in Start replaces the axiom
   derivation_->make_axiom();
   if (derivation_->uses_query_modules()) fill_query_modules();
+  check_string_limits();
   write_requested_frames(derivation_->stop_requested());
 }
 
 bool Simulation::step() {
   begin();
   if (finished_ || stopped()) return false;
+  budget_.set_step(derivation_->steps_done() + 1);
+  RunBudget::Scope bounded(budget_);
+  budget_.check_time();
   const auto started = std::chrono::steady_clock::now();
   // lpfg's Derive and cpfg's Derive both begin with the environmental pass,
   // before StartEach: a run of n steps has n passes, the last one before the
@@ -168,6 +177,7 @@ bool Simulation::step() {
   derivation_->start_each();
   act_on_requests(RequestSource::ControlStatement);
   derivation_->apply_productions();
+  check_string_limits();
   act_on_requests(RequestSource::Rules);
   if (derivation_->uses_query_modules()) fill_query_modules();
   derivation_->end_each();
@@ -180,6 +190,7 @@ bool Simulation::step() {
 
 void Simulation::finish() {
   if (!begun_ || finished_) return;
+  RunBudget::Scope bounded(budget_);
   const bool stopped_before = derivation_->stop_requested();
   derivation_->end();
   finished_ = true;
@@ -195,6 +206,17 @@ void Simulation::run(int steps) {
   while (step_number() < target && step()) {
   }
   finish();
+}
+
+void Simulation::check_string_limits() {
+  budget_.check_time();
+  budget_.check_modules(derivation_->string().data(), derivation_->string().size_bytes());
+}
+
+RunBudget::Scope Simulation::drawing() {
+  budget_.set_step(step_number(), true);
+  budget_.check_time();
+  return RunBudget::Scope(budget_);
 }
 
 void Simulation::rewind() {
@@ -279,6 +301,7 @@ void Simulation::track_births(bool on) { derivation_->track_births(on); }
 const std::vector<std::uint32_t>& Simulation::birth_steps() const { return derivation_->births(); }
 
 ModuleString Simulation::interpreted(int view) {
+  const RunBudget::Scope bounded = drawing();
   ModuleString result = derivation_->interpreted(view);
   act_on_requests(RequestSource::Rules);
   return result;
@@ -287,12 +310,14 @@ ModuleString Simulation::interpreted(int view) {
 std::string Simulation::interpreted_text(int view) { return io::format_string(interpreted(view), types()); }
 
 geometry::Scene Simulation::scene(int view) {
+  const RunBudget::Scope bounded = drawing();
   geometry::Scene drawn = turtle::interpret_scene(*derivation_, view, turtle_settings_);
   act_on_requests(RequestSource::Rules);
   return drawn;
 }
 
 std::string Simulation::turtle_trace(int view) {
+  const RunBudget::Scope bounded = drawing();
   std::string trace;
   turtle::interpret_scene(*derivation_, view, turtle_settings_, &trace);
   act_on_requests(RequestSource::Rules);
@@ -300,6 +325,7 @@ std::string Simulation::turtle_trace(int view) {
 }
 
 void Simulation::write(const std::vector<std::string>& paths) {
+  const RunBudget::Scope bounded = drawing();
   std::map<int, geometry::Scene> scenes;  // by view
   for (const std::string& path : paths)
     for (const ViewOutput& out : view_outputs(path, *this, output_options_)) {

@@ -26,6 +26,7 @@
 #include "inputs/input_files.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
+#include "lstring/run_limits.h"
 #include "sylva/abi.h"
 #include "turtle/turtle_settings.h"
 
@@ -69,6 +70,9 @@ struct SimulationOptions {
   // window does. cpfg in batch (-g) ignores seed: and so, by default, does
   // Sylva, whose runs give cpfg's batch strings.
   bool cpfg_window_seeding = false;
+  // How many modules, how much string memory and how much time the run may
+  // take (lstring/run_limits.h); past one the run stops with LimitExceeded.
+  RunLimits limits = default_run_limits();
 };
 
 // The size of images and drawings.
@@ -166,11 +170,17 @@ class Simulation {
   // model draws view 0 only), and the first of them.
   const std::vector<int>& views() const { return views_; }
   int primary_view() const { return views_.empty() ? 0 : views_.front(); }
+  // The run's limits, and where the run is for their messages.
+  const RunBudget& budget() const { return budget_; }
 
  private:
   void tell(const std::string& text);
   void start_environment(const EnvironmentOptions& options, const std::vector<io::InputFile>& input_files);
   void fill_query_modules();
+  // Throws LimitExceeded past the run's time limit or a string's module limit.
+  void check_string_limits();
+  // Marks what follows as drawing the current string, within the run's limits.
+  RunBudget::Scope drawing();
   // Where requests come from: a control statement, or a rule's body (whose
   // LoadString is an error: the string is being rewritten).
   enum class RequestSource { ControlStatement, Rules };
@@ -196,6 +206,7 @@ class Simulation {
   bool begun_ = false;
   bool finished_ = false;
   std::vector<double> step_seconds_;
+  RunBudget budget_;
   OutputOptions output_options_;
   std::vector<int> views_;
   std::vector<std::string> pending_frames_;  // OutputFrame: written at the end of the step

@@ -8,11 +8,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <new>
+#include <optional>
 
 #include "api/outputs.h"
 #include "api/reference_command_line.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
+#include "app/run_watchdog.h"
 #include "app/studio_command.h"
 #include "build/model_builder.h"
 #include "io/output_file.h"
@@ -40,6 +43,28 @@ void add_build_options(CLI::App& command, CommonOptions& o) {
       ->type_name("cpfg|lc");
 }
 
+void add_limit_options(CLI::App& run, sylva::RunLimits& limits) {
+  const sylva::RunLimits defaults = sylva::default_run_limits();
+  run.add_option("--max-modules", limits.max_modules,
+                 "Stop a run whose string grows past N modules (default " + std::to_string(defaults.max_modules) +
+                     ", from the memory limit; 0: none)")
+      ->type_name("N");
+  run.add_option_function<std::string>(
+         "--max-memory",
+         [&limits](const std::string& text) {
+           const std::optional<std::size_t> bytes = sylva::parse_byte_size(text);
+           if (!bytes) throw CLI::ValidationError("--max-memory", "expected a size such as 4G or 512M, not '" + text + "'");
+           limits.max_memory = *bytes;
+         },
+         "Stop a run whose strings would take more than SIZE (bytes, or with K, M, G; default half the "
+         "physical memory, " + std::to_string(defaults.max_memory >> 20) + "M; 0: none)")
+      ->type_name("SIZE");
+  run.add_option("--timeout", limits.timeout_seconds,
+                 "Stop a run (derivation, interpretation and outputs) that takes more than SECONDS (default: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("SECONDS");
+}
+
 struct RunOptions {
   std::vector<std::string> files;  // only for the help text: the files are read by read_reference_command_line
   std::string model;
@@ -52,6 +77,7 @@ struct RunOptions {
   sylva::OutputOptions output;
   sylva::EnvironmentOptions environment;
   bool cpfg_window_seeding = false;
+  sylva::RunLimits limits = sylva::default_run_limits();
 };
 
 // VerifyString: (LPFG manual 10.4). On a mismatch lpfg's two files of module
@@ -84,7 +110,11 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   sylva::SimulationOptions options{o.build, r.inputs};
   options.environment = r.environment;
   options.cpfg_window_seeding = r.cpfg_window_seeding;
+  options.limits = r.limits;
   sylva::Simulation simulation(r.model, options);
+  std::optional<sylva::app::RunWatchdog> watchdog;
+  if (r.limits.timeout_seconds > 0)
+    watchdog.emplace(r.limits.timeout_seconds, [&simulation] { return simulation.budget().where(); });
   simulation.set_output_options(r.output);
   if (!r.axiom_from.empty())
     simulation.start_from(sylva::io::read_string_file(r.axiom_from, simulation.types()));
@@ -167,6 +197,7 @@ int main(int argc, char** argv) {
             return {};
           },
           "NONNEGATIVE"));
+  add_limit_options(*run, r.limits);
   run->add_option("--string,-s", r.string_path,
                   "Write the final string to FILE ('-' for standard output; the default when no other output is "
                   "asked for)")
@@ -265,6 +296,10 @@ int main(int argc, char** argv) {
     }
   } catch (const sylva::ModelError& e) {
     std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "sylva: error: out of memory (--max-memory SIZE and --max-modules N stop a run that grows too "
+                         "large at the step where it does)\n");
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sylva: error: %s\n", e.what());

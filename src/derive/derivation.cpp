@@ -8,6 +8,7 @@
 
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
+#include "lstring/run_limits.h"
 #include "support/diagnostic.h"
 #include "sylva/predefined_ids.h"
 
@@ -433,7 +434,11 @@ void Derivation::derive_forward() {
   next_.clear();
   // Expect the string to grow as much as in the previous step, so it is
   // allocated once rather than copied on every doubling.
-  next_.reserve(static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256);
+  // Near the run's memory limit only what is affordable: the limit is
+  // reached by what the step writes, not by what it might.
+  const auto expected = static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256;
+  const RunBudget* budget = RunBudget::active();
+  next_.reserve(budget ? budget->affordable(expected) : expected);
   std::size_t pos = src.begin;
   std::size_t run = pos;  // modules from `run` to `pos` are copied unchanged
   auto flush = [&] {

@@ -2,13 +2,19 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <new>
+
+#include "lstring/run_limits.h"
 
 namespace sylva {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+std::atomic<std::size_t> bytes_in_use{0};  // by every string's buffer
 
 // Strings of millions of modules live in huge pages where the system allows
 // it: a fresh buffer is touched once per step, and 4 KiB pages make the page
@@ -23,7 +29,14 @@ unsigned char* allocate_bytes(std::size_t& capacity) {
     data = std::malloc(capacity);
   }
   if (!data) throw std::bad_alloc();
+  bytes_in_use.fetch_add(capacity, std::memory_order_relaxed);
   return static_cast<unsigned char*>(data);
+}
+
+void free_bytes(void* data, std::size_t capacity) {
+  if (!data) return;
+  std::free(data);
+  bytes_in_use.fetch_sub(capacity, std::memory_order_relaxed);
 }
 
 std::size_t grown_capacity(std::size_t current, std::size_t needed) {
@@ -34,18 +47,27 @@ std::size_t grown_capacity(std::size_t current, std::size_t needed) {
 
 void grow_buffer(abi::ModuleBuffer* b, std::size_t min_capacity) {
   std::size_t capacity = grown_capacity(b->capacity, min_capacity);
+  if (const RunBudget* budget = RunBudget::active()) {
+    // Near the memory limit a string grows by what it needs, not by half.
+    capacity = std::max(min_capacity, std::min(capacity, budget->affordable(capacity)));
+    budget->check_time();
+    budget->check_modules(b->data, b->size);
+    budget->check_memory(capacity);
+  }
   unsigned char* data = allocate_bytes(capacity);
   if (b->size) std::memcpy(data, b->data, b->size);
-  std::free(b->data);
+  free_bytes(b->data, b->capacity);
   b->data = data;
   b->capacity = capacity;
 }
 
 }  // namespace
 
+std::size_t string_bytes_in_use() { return bytes_in_use.load(std::memory_order_relaxed); }
+
 ModuleString::ModuleString() { buffer_.grow = &grow_buffer; }
 
-ModuleString::~ModuleString() { std::free(buffer_.data); }
+ModuleString::~ModuleString() { free_bytes(buffer_.data, buffer_.capacity); }
 
 ModuleString::ModuleString(ModuleString&& other) noexcept : buffer_(other.buffer_) {
   other.buffer_.data = nullptr;
@@ -54,7 +76,7 @@ ModuleString::ModuleString(ModuleString&& other) noexcept : buffer_(other.buffer
 
 ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
   if (this != &other) {
-    std::free(buffer_.data);
+    free_bytes(buffer_.data, buffer_.capacity);
     buffer_ = other.buffer_;
     other.buffer_.data = nullptr;
     other.buffer_.size = other.buffer_.capacity = 0;
@@ -87,14 +109,18 @@ std::size_t ModuleString::count_modules(const ModuleTypes& types) const {
   return count;
 }
 
-PrependBuffer::~PrependBuffer() { std::free(data_); }
+PrependBuffer::~PrependBuffer() { free_bytes(data_, capacity_); }
 
 void PrependBuffer::grow(std::size_t needed) {
   std::size_t used = capacity_ - begin_;
   std::size_t capacity = grown_capacity(capacity_, used + needed);
+  if (const RunBudget* budget = RunBudget::active()) {
+    budget->check_time();
+    budget->check_memory(capacity);
+  }
   unsigned char* data = allocate_bytes(capacity);
   if (used) std::memcpy(data + capacity - used, data_ + begin_, used);
-  std::free(data_);
+  free_bytes(data_, capacity_);
   data_ = data;
   begin_ = capacity - used;
   capacity_ = capacity;
