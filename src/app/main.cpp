@@ -45,20 +45,23 @@ void add_build_options(CLI::App& command, CommonOptions& o) {
 
 void add_limit_options(CLI::App& run, sylva::RunLimits& limits) {
   const sylva::RunLimits defaults = sylva::default_run_limits();
-  run.add_option("--max-modules", limits.max_modules,
-                 "Stop a run whose string grows past N modules (default " + std::to_string(defaults.max_modules) +
-                     ", from the memory limit; 0: none)")
-      ->type_name("N");
+  // Before --max-modules: options are applied in the order they are added,
+  // and a memory limit given alone sets the module limit it implies.
   run.add_option_function<std::string>(
          "--max-memory",
          [&limits](const std::string& text) {
            const std::optional<std::size_t> bytes = sylva::parse_byte_size(text);
            if (!bytes) throw CLI::ValidationError("--max-memory", "expected a size such as 4G or 512M, not '" + text + "'");
            limits.max_memory = *bytes;
+           limits.max_modules = sylva::max_modules_for_memory(*bytes);
          },
          "Stop a run whose strings would take more than SIZE (bytes, or with K, M, G; default half the "
          "physical memory, " + std::to_string(defaults.max_memory >> 20) + "M; 0: none)")
       ->type_name("SIZE");
+  run.add_option("--max-modules", limits.max_modules,
+                 "Stop a run whose string grows past N modules (default " + std::to_string(defaults.max_modules) +
+                     ", from the memory limit; 0: none)")
+      ->type_name("N");
   run.add_option("--timeout", limits.timeout_seconds,
                  "Stop a run (derivation, interpretation and outputs) that takes more than SECONDS (default: none)")
       ->check(CLI::NonNegativeNumber)

@@ -538,6 +538,12 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
   auto flush = [&] {
     if (pos > run) out.append(src.data + run, pos - run);
   };
+  // Where the current level builds a successor: the scratch string after its source's.
+  auto scratch_below = [&] {
+    while (expansion_scratch_.size() <= frames.size() + 1) expansion_scratch_.emplace_back();
+    return &expansion_scratch_[frames.size() + 1];
+  };
+  ModuleString* successor = scratch_below();
   // The L-system stack follows the string as it is written out: modules
   // kept as they are here, successors one level down.
   for (;;) {
@@ -552,6 +558,7 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
       if (depth == 0 && kind == RuleKind::Decomposition)
         note_rewrite(up.pos, up.resume, out.size_bytes() - up.output_before);
       pos = run = up.resume;
+      successor = scratch_below();
       continue;
     }
     const ModuleId id = src.id_at(pos);
@@ -561,26 +568,24 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
       continue;
     }
     flush();
-    const std::size_t level = frames.size();
-    while (expansion_scratch_.size() <= level + 1) expansion_scratch_.emplace_back();
-    ModuleString& successor = expansion_scratch_[level + 1];
     std::size_t consumed = 0;
     if (depth >= max_depth) {
-      if (apply_forward(kind, src, pos, successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
     } else {
-      successor.clear();
-      if (apply_forward(kind, src, pos, successor, out, true, &consumed)) {
-        if (consumed == src.end && level > 0) {
+      successor->clear();
+      if (apply_forward(kind, src, pos, *successor, out, true, &consumed)) {
+        if (consumed == src.end && !frames.empty()) {
           // The level ends with this successor: it is replaced rather than
           // kept waiting, so a chain of last modules (A --> B A) takes no
           // more memory however deep it goes.
-          std::swap(expansion_scratch_[level], successor);
+          std::swap(expansion_scratch_[frames.size()], *successor);
         } else {
           frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth});
         }
         ++depth;
         src = expansion_scratch_[frames.size()].view(types_);
         pos = run = src.begin;
+        successor = scratch_below();
         continue;
       }
     }

@@ -38,9 +38,11 @@ RunLimits default_run_limits() {
   const std::size_t physical = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size)
                                                           : std::size_t{8} << 30;
   limits.max_memory = physical / 2;
-  limits.max_modules = limits.max_memory / 16 / kSmallestModuleBytes;
+  limits.max_modules = max_modules_for_memory(limits.max_memory);
   return limits;
 }
+
+std::size_t max_modules_for_memory(std::size_t max_memory) { return max_memory / 16 / kSmallestModuleBytes; }
 
 void RunBudget::start_clock() {
   deadline_ = limits_.timeout_seconds > 0

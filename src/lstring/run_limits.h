@@ -30,6 +30,8 @@ struct RunLimits {
 // would fill in a sixteenth of it, as the turtle's geometry and the step's
 // second string need many times a module's bytes. No time limit.
 RunLimits default_run_limits();
+// The module limit a memory limit implies (0 for none).
+std::size_t max_modules_for_memory(std::size_t max_memory);
 
 // A limit crossed: the message names the step, the amount and the limit.
 class LimitExceeded : public ModelError {

@@ -50,6 +50,8 @@ TEST(RunLimits, DefaultsProtectTheMachine) {
   const RunLimits limits = default_run_limits();
   EXPECT_GT(limits.max_memory, 0u);
   EXPECT_EQ(limits.max_modules, limits.max_memory / 64);
+  EXPECT_EQ(max_modules_for_memory(std::size_t{1} << 30), std::size_t{1} << 24);
+  EXPECT_EQ(max_modules_for_memory(0), 0u);
   EXPECT_EQ(limits.timeout_seconds, 0);
 }
 
@@ -59,7 +61,7 @@ TEST(RunLimits, ModulesStopTheStepThatCrossesThem) {
   // 2^10 = 1024 modules after step 10.
   EXPECT_EQ(limit_message(*s),
             "sylva: error: step 10: the string has more than 1000 modules, the limit (--max-modules N raises it)");
-  EXPECT_EQ(s->step_number(), 9);
+  EXPECT_EQ(s->step_number(), 10);  // the step that crossed it, not one more
 }
 
 TEST(RunLimits, MemoryStopsTheStepBeforeItAllocatesPastTheLimit) {
@@ -95,7 +97,7 @@ TEST(RunLimits, TheCommandLineFailsAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("step 13: the string has more than 5000 modules"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out.str"));
-  const ProcessResult memory = run_sylva({"run", model, "--max-memory", "1M", "-s", dir + "/out.str"}, dir);
+  const ProcessResult memory = run_sylva({"run", model, "--max-memory", "1M", "--max-modules", "0", "-s", dir + "/out.str"}, dir);
   EXPECT_EQ(memory.exit_code, 1) << memory.err;
   EXPECT_NE(memory.err.find("--max-memory SIZE raises it"), std::string::npos) << memory.err;
   const ProcessResult bad = run_sylva({"run", model, "--max-memory", "lots"}, dir);
