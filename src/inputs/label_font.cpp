@@ -1,6 +1,6 @@
 #include "inputs/label_font.h"
 
-#include <cstdlib>
+#include <charconv>
 #include <vector>
 
 namespace sylva::io {
@@ -22,7 +22,12 @@ std::vector<std::string> x_font_fields(const std::string& name) {
   return fields;
 }
 
-int leading_integer(const std::string& text) { return std::atoi(text.c_str()); }
+// The whole number a field starts with; 0 for none, or one past an int.
+int leading_integer(const std::string& text) {
+  int value = 0;
+  if (std::from_chars(text.data(), text.data() + text.size(), value).ec != std::errc()) return 0;
+  return value;
+}
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "inputs/contour_file.h"
 #include "inputs/curve_file.h"
 #include "inputs/function_file.h"
+#include "inputs/label_font.h"
 #include "inputs/view_file.h"
 #include "input_test_helpers.h"
 
@@ -66,6 +67,11 @@ TEST(AbsurdSizes, ViewFileSurfaceSubdivisionsAndIds) {
     ASSERT_EQ(view.warnings.size(), 1u) << cases[i].text;
     EXPECT_EQ(view.warnings[0], path + cases[i].expected) << cases[i].text;
   }
+}
+
+TEST(AbsurdSizes, AFontSizePastAnIntIsNoSize) {
+  EXPECT_EQ(io::parse_x_font("-*-courier-bold-r-*-*-99999999999-*-*-*-*-*-*-*").points,
+            io::parse_x_font("-*-courier-bold-r-*-*-*-*-*-*-*-*-*-*").points);
 }
 
 }  // namespace
