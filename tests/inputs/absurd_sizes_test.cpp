@@ -40,10 +40,10 @@ TEST(AbsurdSizes, FunctionSamples) {
 TEST(AbsurdSizes, CurveMultiplicity) {
   const std::string dir = make_temp_dir("absurd-curves");
   const std::string path = write_file(dir, "c.crv",
-                                      "range: 0.0 1.0\ndimension: 4\ntype: bspline\npoints: 4\n0 0 0 1\n1 0 0 1e9\n"
-                                      "1 1 0 1\n0 1 0 1\n");
+                                      "version: 1.4\npoints: 4\nrange: 0.0 1.0\ndimension: 4\ntype: bspline\n0 0 0 1\n"
+                                      "1 0 0 1e9\n1 1 0 1\n0 1 0 1\n");
   EXPECT_EQ(error_of([&] { io::read_curve_file(path); }),
-            path + ":6:7: error: the multiplicity of point 2 of 4 is past the limit of 1000, far above any real "
+            path + ":7:7: error: the multiplicity of point 2 of 4 is past the limit of 1000, far above any real "
                    "curve's (is the file damaged?)");
 }
 
@@ -62,8 +62,9 @@ TEST(AbsurdSizes, ViewFileSurfaceSubdivisionsAndIds) {
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string path = write_file(dir, "v" + std::to_string(i) + ".v", cases[i].text + "\n");
+    const io::ViewDialect dialect = i == 0 ? io::ViewDialect::Lpfg : io::ViewDialect::Cpfg;  // contour: is cpfg's
     io::ViewFile view;
-    EXPECT_EQ(error_of([&] { view = io::read_view_file(path); }), "") << cases[i].text;
+    EXPECT_EQ(error_of([&] { view = io::read_view_file(path, "", dialect); }), "") << cases[i].text;
     ASSERT_EQ(view.warnings.size(), 1u) << cases[i].text;
     EXPECT_EQ(view.warnings[0], path + cases[i].expected) << cases[i].text;
   }
