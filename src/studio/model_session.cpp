@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <charconv>
 #include <regex>
 #include <set>
 
@@ -313,9 +314,13 @@ json ModelSession::located_error(const json& worker_error) const {
     static const std::regex located(R"(([^\s:]+):(\d+):(\d+):\s*(fatal )?error)");
     std::smatch m;
     if (std::regex_search(message, m, located)) {
-      file = m[1];
-      line = std::stoi(m[2]);
-      column = std::stoi(m[3]);
+      // Numbers past int leave the place unknown.
+      const std::string line_digits = m[2], column_digits = m[3];
+      if (std::from_chars(line_digits.data(), line_digits.data() + line_digits.size(), line).ec == std::errc() &&
+          std::from_chars(column_digits.data(), column_digits.data() + column_digits.size(), column).ec == std::errc())
+        file = m[1];
+      else
+        line = column = 0;
     }
   }
   const std::string absolute = file.empty() ? "" : fs::absolute(fs::path(folder_) / file).lexically_normal().string();
