@@ -1,20 +1,16 @@
 #include "build/compiler_messages.h"
 
-#include <charconv>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <vector>
 
+#include "lang/literal_numbers.h"
 #include "support/whole_file.h"
 
 namespace sylva::build {
 namespace {
 
-bool read_int(const std::string& digits, int* value) {
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), *value);
-  return error == std::errc() && end == digits.data() + digits.size();
-}
 
 // GCC counts columns as a display does: a tab moves to the next multiple of
 // 8, a character of several UTF-8 bytes is one column.
@@ -67,10 +63,12 @@ std::string compiler_messages(const std::string& err, const SourceLines& lines) 
     std::smatch m;
     if (std::regex_match(line, m, located)) {
       moved_to = 0;
-      int line_number = 0, column = 0;
       // A number past int (a #line the compiler took) leaves the message as it is.
-      const bool numbers = read_int(m[2].str(), &line_number) && read_int(m[3].str(), &column);
-      if (std::optional<std::string> text = numbers ? lines(m[1].str(), line_number) : std::nullopt) {
+      const std::optional<int> line_number = lang::nonnegative_int(m[2].str());
+      const std::optional<int> column_number = lang::nonnegative_int(m[3].str());
+      const int column = column_number.value_or(0);
+      if (std::optional<std::string> text =
+              line_number && column_number ? lines(m[1].str(), *line_number) : std::nullopt) {
         const LineColumns c = columns_of(*text);
         if (column > c.width && column > 1) {
           // Inside generated code: where it starts is not known, the

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <charconv>
 #include <regex>
 #include <set>
 
+#include "lang/literal_numbers.h"
 #include "support/whole_file.h"
 
 namespace sylva::studio {
@@ -315,12 +315,13 @@ json ModelSession::located_error(const json& worker_error) const {
     std::smatch m;
     if (std::regex_search(message, m, located)) {
       // Numbers past int leave the place unknown.
-      const std::string line_digits = m[2], column_digits = m[3];
-      if (std::from_chars(line_digits.data(), line_digits.data() + line_digits.size(), line).ec == std::errc() &&
-          std::from_chars(column_digits.data(), column_digits.data() + column_digits.size(), column).ec == std::errc())
+      const std::optional<int> line_number = lang::nonnegative_int(m[2].str());
+      const std::optional<int> column_number = lang::nonnegative_int(m[3].str());
+      if (line_number && column_number) {
         file = m[1];
-      else
-        line = column = 0;
+        line = *line_number;
+        column = *column_number;
+      }
     }
   }
   const std::string absolute = file.empty() ? "" : fs::absolute(fs::path(folder_) / file).lexically_normal().string();

@@ -19,7 +19,12 @@ std::array<std::atomic<pid_t>, 64> child_groups{};
 
 void on_signal(int signal_number) {
   clean_up_now();
-  // End as the signal would have: default action, then the signal again.
+  end_as_signal(signal_number);
+}
+
+}  // namespace
+
+void end_as_signal(int signal_number) {
   struct sigaction default_action {};
   default_action.sa_handler = SIG_DFL;
   sigemptyset(&default_action.sa_mask);
@@ -31,8 +36,6 @@ void on_signal(int signal_number) {
   raise(signal_number);
   _exit(128 + signal_number);
 }
-
-}  // namespace
 
 void install_handlers() {
   struct sigaction action {};

@@ -15,6 +15,11 @@ namespace sylva::interruption {
 // handle these signals themselves (the studio) do not call it.
 void install_handlers();
 
+// Ends the process as `signal_number` would have: its default action, then
+// the signal again (128 + the number if it is somehow survived). For
+// handlers, after they have done their part. Async-signal-safe.
+[[noreturn]] void end_as_signal(int signal_number);
+
 // Removes every registered temporary file and stops every registered process
 // group. Async-signal-safe: a fatal-signal handler may call it too.
 void clean_up_now();

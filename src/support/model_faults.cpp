@@ -78,19 +78,6 @@ const char* describe(const siginfo_t& info) {
   }
 }
 
-void end_with(int signal_number) {
-  struct sigaction default_action {};
-  default_action.sa_handler = SIG_DFL;
-  sigemptyset(&default_action.sa_mask);
-  sigaction(signal_number, &default_action, nullptr);
-  sigset_t unblocked;
-  sigemptyset(&unblocked);
-  sigaddset(&unblocked, signal_number);
-  sigprocmask(SIG_UNBLOCK, &unblocked, nullptr);
-  raise(signal_number);
-  _exit(128 + signal_number);
-}
-
 void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
   const CallSite site = current_site;
   if (!site.what) {
@@ -115,7 +102,7 @@ void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
        << static_cast<long>(site.step) << ")\n";
   text.write_to(STDERR_FILENO);
   interruption::clean_up_now();
-  end_with(signal_number);
+  interruption::end_as_signal(signal_number);
 }
 
 void note_stack_bounds() {
