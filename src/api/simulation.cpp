@@ -249,7 +249,7 @@ void Simulation::act_on_requests(RequestSource source) {
 void Simulation::act_on_request(int request, int value, const std::string& file, RequestSource source) {
   switch (request) {
     case abi::kRequestOutputString:
-      io::write_output_file(file_name(file, "OutputString", model_path_), string_text());
+      write_string(file_name(file, "OutputString", model_path_));
       break;
     case abi::kRequestLoadString:
       if (source == RequestSource::Rules)
@@ -297,6 +297,10 @@ const ModuleString& Simulation::string() const { return derivation_->string(); }
 
 std::string Simulation::string_text() const { return io::format_string(derivation_->string(), types()); }
 
+void Simulation::write_string(const std::string& path) const {
+  io::write_output_file(path, [this](const ContentSink& sink) { io::write_string_text(string(), types(), sink); });
+}
+
 void Simulation::track_births(bool on) { derivation_->track_births(on); }
 const std::vector<std::uint32_t>& Simulation::birth_steps() const { return derivation_->births(); }
 
@@ -308,6 +312,11 @@ ModuleString Simulation::interpreted(int view) {
 }
 
 std::string Simulation::interpreted_text(int view) { return io::format_string(interpreted(view), types()); }
+
+void Simulation::write_interpreted_string(const std::string& path, int view) {
+  const ModuleString text = interpreted(view);
+  io::write_output_file(path, [&](const ContentSink& sink) { io::write_string_text(text, types(), sink); });
+}
 
 geometry::Scene Simulation::scene(int view) {
   const RunBudget::Scope bounded = drawing();

@@ -129,6 +129,9 @@ class Simulation {
   const ModuleString& string() const;
   // As `sylva run --string` writes it.
   std::string string_text() const;
+  // The same text written to a file ("-": standard output) as it is made,
+  // never whole in memory; the file is replaced only once complete.
+  void write_string(const std::string& path) const;
   // The step that made each module of string(), by index (0: the axiom),
   // when track_births(true) was called before the run began; else empty.
   void track_births(bool on);
@@ -137,6 +140,7 @@ class Simulation {
   // turtle draws in that view.
   ModuleString interpreted(int view);
   std::string interpreted_text(int view);
+  void write_interpreted_string(const std::string& path, int view);
   // The current string drawn by the turtle in view `view` (its vgroup's
   // interpretation rules); without a view, primary_view().
   geometry::Scene scene(int view);

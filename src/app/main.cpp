@@ -84,6 +84,7 @@ struct RunOptions {
   sylva::OutputOptions output;
   sylva::EnvironmentOptions environment;
   bool cpfg_window_seeding = false;
+  bool huge_pages = false;
   sylva::RunLimits limits = sylva::default_run_limits();
 };
 
@@ -106,6 +107,10 @@ bool check_verify_string(sylva::Simulation& simulation, const std::string& model
   return false;
 }
 
+// `--string none`: no string at all, not even on standard output (a run
+// wanted for its time, its other outputs or its VerifyString check).
+constexpr const char* kNoString = "none";
+
 int run_command(const RunOptions& r, const CommonOptions& o) {
   // Bad output names fail before any work is done.
   for (const std::string& path : r.outputs) sylva::check_output_path(path);
@@ -114,6 +119,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     sylva::build::build_model(r.model, o.build);
     return 0;
   }
+  sylva::use_huge_pages(r.huge_pages);
   sylva::SimulationOptions options{o.build, r.inputs};
   options.environment = r.environment;
   options.cpfg_window_seeding = r.cpfg_window_seeding;
@@ -133,17 +139,18 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   if (!check_verify_string(simulation, r.model)) return 1;
   // As the first view draws it.
   if (!r.interpreted_path.empty())
-    sylva::io::write_output_file(r.interpreted_path, simulation.interpreted_text(simulation.primary_view()));
+    simulation.write_interpreted_string(r.interpreted_path, simulation.primary_view());
   if (!r.turtle_path.empty())
     sylva::io::write_output_file(r.turtle_path, simulation.turtle_trace(simulation.primary_view()));
   simulation.write(r.outputs);
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
                             !r.frames_dir.empty();
+  if (r.string_path == kNoString) return 0;
   if (!r.string_path.empty() || !other_output) {
     const std::string path = r.string_path.empty() ? "-" : r.string_path;
     // cpfg's -h: the string after homomorphism.
-    sylva::io::write_output_file(path, r.interpreted_string ? simulation.interpreted_text(simulation.primary_view())
-                                                            : simulation.string_text());
+    if (r.interpreted_string) simulation.write_interpreted_string(path, simulation.primary_view());
+    else simulation.write_string(path);
   }
   return 0;
 }
@@ -216,9 +223,12 @@ int main(int argc, char** argv) {
           },
           "NONNEGATIVE"));
   add_limit_options(*run, r.limits);
+  run->add_flag("--huge-pages", r.huge_pages,
+                "Keep large strings in transparent huge pages: faster where the system has free huge pages at "
+                "hand, slower on virtual machines that return free memory to their host (docs/performance.md)");
   run->add_option("--string,-s", r.string_path,
                   "Write the final string to FILE ('-' for standard output; the default when no other output is "
-                  "asked for)")
+                  "asked for; 'none' for no string at all, ./none for a file of that name)")
       ->type_name("FILE");
   run->add_option("--interpreted", r.interpreted_path,
                   "Write the final string after interpretation rules (what the turtle draws) to FILE or '-'")

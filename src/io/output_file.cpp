@@ -24,10 +24,16 @@ namespace {
 
 // Devices and pipes (/dev/null, /dev/stdout, a FIFO) are written in place:
 // renaming a file over them would replace the device.
-void write_in_place(const std::string& path, const std::string& content) {
+void write_in_place(const std::string& path, const ContentProducer& produce) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) cannot_write(path, errno);
-  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  bool ok = true;
+  try {
+    produce([&](std::string_view piece) { ok = ok && std::fwrite(piece.data(), 1, piece.size(), f) == piece.size(); });
+  } catch (...) {
+    std::fclose(f);
+    throw;
+  }
   if (std::fclose(f) != 0 || !ok) cannot_write(path, errno);
 }
 
@@ -61,18 +67,24 @@ bool standard_output_failed = false;  // and said so
 }  // namespace
 
 void write_output_file(const std::string& path, const std::string& content) {
+  write_output_file(path, [&content](const ContentSink& sink) { sink(content); });
+}
+
+void write_output_file(const std::string& path, const ContentProducer& produce) {
   if (path == "-") {
-    if (std::fwrite(content.data(), 1, content.size(), stdout) != content.size() || std::fflush(stdout) != 0)
-      standard_output_error(errno);
+    produce([](std::string_view piece) {
+      if (std::fwrite(piece.data(), 1, piece.size(), stdout) != piece.size()) standard_output_error(errno);
+    });
+    if (std::fflush(stdout) != 0) standard_output_error(errno);
     return;
   }
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
-    write_in_place(path, content);
+    write_in_place(path, produce);
     return;
   }
-  if (const int error = write_file_atomically(end_of_links(path), content)) cannot_write(path, error);
+  if (const int error = write_file_atomically(end_of_links(path), produce)) cannot_write(path, error);
 }
 
 void check_standard_output_at_exit() {

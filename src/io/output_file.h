@@ -6,11 +6,15 @@
 
 #include <string>
 
+#include "support/whole_file.h"
+
 namespace sylva::io {
 
 // "-" writes to standard output. Throws ModelError naming the path (or
 // standard output) on failure.
 void write_output_file(const std::string& path, const std::string& content);
+// The same with the content produced piece by piece (see whole_file.h).
+void write_output_file(const std::string& path, const ContentProducer& produce);
 
 // A program that prints to standard output ends with status 1 and says so
 // when what it printed could not all be written (a full disk, /dev/full, a

@@ -61,6 +61,19 @@ class CppGenerator {
     out_.at(s.at, text);
     out_.at(s.at, struct_parser(s));
     out_.at(s.at, struct_layout(s));
+    out_.at(s.at, struct_text_from_table(s));
+  }
+
+  // Whether the engine can print the struct from its layout: every field
+  // located (not a bit-field or a reference) and printable from its own.
+  static std::string struct_text_from_table(const StructFields& s) {
+    std::string text = "template <class SylvaS> requires ::std::is_same_v<SylvaS, " + s.name +
+                       "> consteval bool sylva_struct_text_from_table(const SylvaS*) { return " +
+                       (s.fields.empty() ? "false" : "true");
+    for (const std::string& field : s.fields)
+      text += " && requires { &SylvaS::" + field + "; } && ::sylva::rt::text_from_table<::std::remove_cv_t<decltype(SylvaS::" +
+              field + ")>>()";
+    return text + "; }";
   }
 
   // The fields' types and offsets for the model ABI. A template, so that a

@@ -13,30 +13,58 @@ namespace sylva {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
+// Buffers this large are mapped pages of their own: growing one moves its
+// pages (mremap) instead of copying them, and the pages already touched stay
+// touched, so a string that grows step after step is faulted in once.
+constexpr std::size_t kMappedBuffer = std::size_t{1} << 20;
+constexpr std::size_t kPage = 4096;
 
 std::atomic<std::size_t> bytes_in_use{0};  // by every string's buffer
+std::atomic<bool> huge_pages{false};
 
-// Strings of millions of modules live in huge pages where the system allows
-// it: a fresh buffer is touched once per step, and 4 KiB pages make the page
-// faults cost as much as the derivation.
+bool is_mapped(std::size_t capacity) { return capacity >= kMappedBuffer; }
+
+void advise(void* data, std::size_t capacity) {
+  if (huge_pages.load(std::memory_order_relaxed)) madvise(data, capacity, MADV_HUGEPAGE);
+}
+
 unsigned char* allocate_bytes(std::size_t& capacity) {
   void* data = nullptr;
-  if (capacity >= 4 * kHugePage) {
-    capacity = (capacity + kHugePage - 1) / kHugePage * kHugePage;
-    data = std::aligned_alloc(kHugePage, capacity);
-    if (data) madvise(data, capacity, MADV_HUGEPAGE);
+  if (is_mapped(capacity)) {
+    capacity = (capacity + kPage - 1) / kPage * kPage;
+    data = mmap(nullptr, capacity, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (data == MAP_FAILED) throw std::bad_alloc();
+    advise(data, capacity);
   } else {
     data = std::malloc(capacity);
+    if (!data) throw std::bad_alloc();
   }
-  if (!data) throw std::bad_alloc();
   bytes_in_use.fetch_add(capacity, std::memory_order_relaxed);
   return static_cast<unsigned char*>(data);
 }
 
 void free_bytes(void* data, std::size_t capacity) {
   if (!data) return;
-  std::free(data);
+  if (is_mapped(capacity)) munmap(data, capacity);
+  else std::free(data);
   bytes_in_use.fetch_sub(capacity, std::memory_order_relaxed);
+}
+
+// `data` (of `capacity` bytes, `used` of them in use) moved to a buffer of
+// at least `wanted` bytes; `wanted` becomes the new capacity.
+unsigned char* reallocate_bytes(unsigned char* data, std::size_t capacity, std::size_t used, std::size_t& wanted) {
+  if (data && is_mapped(capacity)) {
+    wanted = (wanted + kPage - 1) / kPage * kPage;
+    void* moved = mremap(data, capacity, wanted, MREMAP_MAYMOVE);
+    if (moved == MAP_FAILED) throw std::bad_alloc();
+    advise(moved, wanted);
+    bytes_in_use.fetch_add(wanted - capacity, std::memory_order_relaxed);
+    return static_cast<unsigned char*>(moved);
+  }
+  unsigned char* fresh = allocate_bytes(wanted);
+  if (used) std::memcpy(fresh, data, used);
+  free_bytes(data, capacity);
+  return fresh;
 }
 
 std::size_t grown_capacity(std::size_t current, std::size_t needed) {
@@ -54,16 +82,15 @@ void grow_buffer(abi::ModuleBuffer* b, std::size_t min_capacity) {
     budget->check_modules(b->data, b->size);
     budget->check_memory(capacity);
   }
-  unsigned char* data = allocate_bytes(capacity);
-  if (b->size) std::memcpy(data, b->data, b->size);
-  free_bytes(b->data, b->capacity);
-  b->data = data;
+  b->data = reallocate_bytes(b->data, b->capacity, b->size, capacity);
   b->capacity = capacity;
 }
 
 }  // namespace
 
 std::size_t string_bytes_in_use() { return bytes_in_use.load(std::memory_order_relaxed); }
+
+void use_huge_pages(bool on) { huge_pages.store(on, std::memory_order_relaxed); }
 
 ModuleString::ModuleString() { buffer_.grow = &grow_buffer; }
 

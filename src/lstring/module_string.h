@@ -25,6 +25,13 @@ inline const unsigned char* module_params(const unsigned char* data, std::size_t
   return data + offset + sizeof(ModuleId);
 }
 
+// Whether string buffers of several megabytes ask for transparent huge pages
+// (off by default). Huge pages make a derivation's page faults cheaper where
+// the system keeps free huge pages at hand; on virtual machines that hand
+// free memory back to their host each one is faulted in afresh, and the
+// derivation is slower with them. Applies to buffers allocated from then on.
+void use_huge_pages(bool on);
+
 // A read-only range of a string: modules between `begin` and `end` (byte offsets).
 struct StringView {
   const unsigned char* data = nullptr;

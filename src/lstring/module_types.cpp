@@ -2,12 +2,30 @@
 
 #include <cstring>
 
+#include "lstring/param_text.h"
+
 namespace sylva {
 
 ModuleTypes::ModuleTypes(std::vector<Type> types) : types_(std::move(types)) {
   for (std::size_t k = 0; k < types_.size(); ++k) {
     encoded_sizes_.push_back(types_[k].param_size + static_cast<std::uint32_t>(abi::kModuleOverhead));
     by_name_.emplace(types_[k].name, static_cast<ModuleId>(k));
+  }
+  classify_params_text();
+}
+
+void ModuleTypes::set_cpfg(bool cpfg) {
+  cpfg_ = cpfg;
+  classify_params_text();
+}
+
+void ModuleTypes::classify_params_text() {
+  const NumberStyle style = cpfg_ ? NumberStyle::kCpfg : NumberStyle::kExact;
+  params_text_from_table_.assign(types_.size(), false);
+  for (std::size_t k = 0; k < types_.size(); ++k) {
+    const Type& type = types_[k];
+    const bool described = type.params != nullptr || type.param_size == 0;
+    params_text_from_table_[k] = described && params_text_from_table(params(static_cast<ModuleId>(k)), style);
   }
 }
 
@@ -99,6 +117,10 @@ std::vector<double> ModuleTypes::numbers(ModuleId id, const unsigned char* param
 }
 
 void ModuleTypes::format_params(ModuleId id, const unsigned char* params, std::string& out) const {
+  if (params_text_from_table_[id]) {
+    append_params_text(this->params(id), params, cpfg_ ? NumberStyle::kCpfg : NumberStyle::kExact, out);
+    return;
+  }
   const Type& type = types_[id];
   if (!type.format_params) return;
   abi::TextSink sink{&out, [](void* self, const char* text, std::size_t n) {

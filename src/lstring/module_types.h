@@ -44,7 +44,7 @@ class ModuleTypes {
   std::optional<ModuleId> find(std::string_view name) const;
   // The model is cpfg's: its strings are written in cpfg's format.
   bool cpfg() const { return cpfg_; }
-  void set_cpfg(bool cpfg) { cpfg_ = cpfg; }
+  void set_cpfg(bool cpfg);
 
   // The parameters' types and offsets; empty when they are not known.
   std::span<const abi::ParamField> params(ModuleId id) const;
@@ -54,12 +54,18 @@ class ModuleTypes {
   // layout hold none.
   std::vector<double> numbers(ModuleId id, const unsigned char* params) const;
 
-  // "p1,p2" for a module's parameter block.
+  // "p1,p2" for a module's parameter block, appended to `out`: written from
+  // the parameters' table (lstring/param_text.h) where it describes them,
+  // by the model's own printer otherwise.
   void format_params(ModuleId id, const unsigned char* params, std::string& out) const;
 
  private:
   std::vector<Type> types_;
+  // Which types' parameters are written from their table.
+  void classify_params_text();
+
   std::vector<std::uint32_t> encoded_sizes_;
+  std::vector<bool> params_text_from_table_;
   std::unordered_map<std::string, ModuleId> by_name_;
   bool cpfg_ = false;
 };

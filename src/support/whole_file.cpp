@@ -26,6 +26,10 @@ WholeFile read_whole_file(const std::string& path) {
 }
 
 int write_file_atomically(const std::string& path, std::string_view content) {
+  return write_file_atomically(path, [content](const ContentSink& sink) { sink(content); });
+}
+
+int write_file_atomically(const std::string& path, const ContentProducer& produce) {
   const std::string tmp = path + ".tmp" + std::to_string(getpid());
   const interruption::TemporaryFile registered(tmp);
   // A file replaced keeps its permissions; a new one gets the umask's. The
@@ -39,10 +43,19 @@ int write_file_atomically(const std::string& path, std::string_view content) {
   if (fd < 0) return errno;
   int error = 0;
   if (replacing && ::fchmod(fd, mode) != 0) error = errno;  // what the umask took away
-  for (std::size_t done = 0; error == 0 && done < content.size();) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n >= 0) done += static_cast<std::size_t>(n);
-    else if (errno != EINTR) error = errno;
+  auto write_piece = [&](std::string_view piece) {
+    for (std::size_t done = 0; error == 0 && done < piece.size();) {
+      const ssize_t n = ::write(fd, piece.data() + done, piece.size() - done);
+      if (n >= 0) done += static_cast<std::size_t>(n);
+      else if (errno != EINTR) error = errno;
+    }
+  };
+  try {
+    produce(write_piece);
+  } catch (...) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw;
   }
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error == 0 && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;

@@ -1,6 +1,7 @@
 // Files read or written whole.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -24,4 +25,14 @@ WholeFile read_whole_file(const std::string& path);
 // temporary file removed, `path` untouched).
 int write_file_atomically(const std::string& path, std::string_view content);
 
+// Receives a file's content piece by piece, in order.
+using ContentSink = std::function<void(std::string_view)>;
+// Produces a file's content by handing it to the sink in pieces. It may
+// throw: the file is then left as it was.
+using ContentProducer = std::function<void(const ContentSink&)>;
+
+// The same, with the content handed over in pieces, so that it need never
+// be whole in memory. An exception from `produce` removes the temporary
+// file and passes on.
+int write_file_atomically(const std::string& path, const ContentProducer& produce);
 }  // namespace sylva

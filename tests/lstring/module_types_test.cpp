@@ -57,7 +57,10 @@ TEST(ModuleTypes, FromAModelTheEngineSuppliesThePredefinedPrinters) {
   const ModuleTypes cpfg = ModuleTypes::from_model(descriptor);
   EXPECT_TRUE(cpfg.cpfg());
   EXPECT_EQ(cpfg[rt::mid::F].parse_params, nullptr);
-  EXPECT_NE(cpfg[rt::mid::F].format_params, nullptr);
+  const float third = 1.0f / 3.0f;
+  text.clear();
+  cpfg.format_params(rt::mid::F, reinterpret_cast<const unsigned char*>(&third), text);
+  EXPECT_EQ(text, "0.333333");  // cpfg's %g
 }
 
 }  // namespace

@@ -167,9 +167,13 @@ void format_params(const unsigned char* params, abi::TextSink* out) {
 
 namespace sylva::rt {
 
+// Parameters the engine can write from their table get no printer of their
+// own: one less template for the model to compile.
 template <class... T>
 abi::ModuleType module_type(const char* name) {
-  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), &format_params<T...>,
+  decltype(abi::ModuleType::format_params) printer = nullptr;
+  if constexpr (!(text_from_table<T>() && ...)) printer = &format_params<T...>;
+  return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), printer,
                          static_cast<std::uint32_t>(sizeof...(T)), &parse_params<T...>, param_fields<T...>()};
 }
 

@@ -81,6 +81,27 @@ const abi::ParamField* param_fields() {
   }
 }
 
+// Whether the engine writes a value of type T as text from its table
+// (the engine's lstring/param_text.h), so that a model need not compile a
+// printer for it. The model's structs say so through
+// sylva_struct_text_from_table, which the translator writes.
+template <class T>
+constexpr bool text_from_table() {
+  if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
+    return true;
+  } else if constexpr (vector_size<T> > 0) {
+    return text_from_table<std::remove_cv_t<decltype(T::x)>>();
+  } else if constexpr (std::is_same_v<T, const char*> || std::is_same_v<T, char*>) {
+    return true;
+  } else if constexpr (std::is_array_v<T>) {
+    return text_from_table<std::remove_cv_t<std::remove_extent_t<T>>>();
+  } else if constexpr (requires(const T* p) { sylva_struct_text_from_table(p); }) {
+    return sylva_struct_text_from_table(static_cast<const T*>(nullptr));
+  } else {
+    return false;
+  }
+}
+
 // A field of type F at `offset` in its struct.
 template <class F>
 abi::ParamField param_field(const char* name, std::size_t offset) {

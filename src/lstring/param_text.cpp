@@ -1,0 +1,136 @@
+#include "lstring/param_text.h"
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+
+namespace sylva {
+namespace {
+
+using abi::ParamKind;
+using abi::ParamType;
+
+template <class T>
+T load(const unsigned char* at) {
+  T value;
+  std::memcpy(&value, at, sizeof value);
+  return value;
+}
+
+template <class T>
+void append_number(T value, NumberStyle style, std::string& out) {
+  char text[64];
+  std::to_chars_result r;
+  if constexpr (std::is_floating_point_v<T>) {
+    r = style == NumberStyle::kCpfg ? std::to_chars(text, text + sizeof text, value, std::chars_format::general, 6)
+                                     : std::to_chars(text, text + sizeof text, value);
+  } else {
+    r = std::to_chars(text, text + sizeof text, value);
+  }
+  out.append(text, r.ptr);
+}
+
+void append_integer(const ParamType& type, const unsigned char* at, std::string& out) {
+  const bool is_signed = type.kind == ParamKind::kSigned;
+  switch (type.size) {
+    case 1:
+      return is_signed ? append_number(load<std::int8_t>(at), NumberStyle::kExact, out)
+                       : append_number(load<std::uint8_t>(at), NumberStyle::kExact, out);
+    case 2:
+      return is_signed ? append_number(load<std::int16_t>(at), NumberStyle::kExact, out)
+                       : append_number(load<std::uint16_t>(at), NumberStyle::kExact, out);
+    case 4:
+      return is_signed ? append_number(load<std::int32_t>(at), NumberStyle::kExact, out)
+                       : append_number(load<std::uint32_t>(at), NumberStyle::kExact, out);
+    default:
+      return is_signed ? append_number(load<std::int64_t>(at), NumberStyle::kExact, out)
+                       : append_number(load<std::uint64_t>(at), NumberStyle::kExact, out);
+  }
+}
+
+void append_bytes(const unsigned char* at, std::size_t n, std::string& out) {
+  static constexpr char kDigits[] = "0123456789abcdef";
+  out += '#';
+  for (std::size_t i = 0; i < n; ++i) {
+    out += kDigits[at[i] >> 4];
+    out += kDigits[at[i] & 15];
+  }
+}
+
+void append_text(const char* text, std::string& out) {
+  out += '"';
+  for (const char* c = text ? text : ""; *c; ++c) {
+    if (*c == '"' || *c == '\\') out += '\\';
+    out += *c;
+  }
+  out += '"';
+}
+
+bool from_table(const ParamType* type, NumberStyle style) {
+  if (!type) return false;
+  switch (type->kind) {
+    case ParamKind::kEnum:
+    case ParamKind::kVector:
+    case ParamKind::kArray: return from_table(type->element, style);
+    case ParamKind::kStruct:
+      // A struct without a field list has an unknown layout only if it is
+      // not the model's own; with one, every field must be located.
+      if (type->field_count == 0) return false;
+      for (std::uint32_t k = 0; k < type->field_count; ++k)
+        if (!from_table(type->fields[k].type, style)) return false;
+      return true;
+    case ParamKind::kText: return style == NumberStyle::kExact;
+    default: return true;
+  }
+}
+
+void append_value(const ParamType& type, const unsigned char* at, NumberStyle style, std::string& out) {
+  switch (type.kind) {
+    case ParamKind::kFloat: return append_number(load<float>(at), style, out);
+    case ParamKind::kDouble: return append_number(load<double>(at), style, out);
+    case ParamKind::kLongDouble: return append_number(load<long double>(at), style, out);
+    case ParamKind::kBool: out += load<bool>(at) ? '1' : '0'; return;
+    case ParamKind::kSigned:
+    case ParamKind::kUnsigned: return append_integer(type, at, out);
+    case ParamKind::kEnum: return append_value(*type.element, at, style, out);
+    case ParamKind::kVector:
+    case ParamKind::kArray:
+      out += type.kind == ParamKind::kVector ? '(' : '[';
+      for (std::uint32_t k = 0; k < type.count; ++k) {
+        if (k) out += ',';
+        append_value(*type.element, at + k * type.element->size, style, out);
+      }
+      out += type.kind == ParamKind::kVector ? ')' : ']';
+      return;
+    case ParamKind::kStruct:
+      for (std::uint32_t k = 0; k < type.field_count; ++k) {
+        const abi::ParamField& field = type.fields[k];
+        out += k ? ',' : '{';
+        out += field.name;
+        out += '=';
+        append_value(*field.type, at + field.offset, style, out);
+      }
+      out += '}';
+      return;
+    case ParamKind::kText: return append_text(load<const char*>(at), out);
+    case ParamKind::kOther: return append_bytes(at, type.size, out);
+  }
+}
+
+}  // namespace
+
+bool params_text_from_table(std::span<const abi::ParamField> params, NumberStyle style) {
+  for (const abi::ParamField& param : params)
+    if (!from_table(param.type, style)) return false;
+  return true;
+}
+
+void append_params_text(std::span<const abi::ParamField> params, const unsigned char* block, NumberStyle style,
+                        std::string& out) {
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    if (k) out += ',';
+    append_value(*params[k].type, block + params[k].offset, style, out);
+  }
+}
+
+}  // namespace sylva
