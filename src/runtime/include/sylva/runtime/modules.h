@@ -12,7 +12,7 @@
 #include <sylva/runtime/types.h>
 #include <sylva/runtime/vectors.h>
 
-#include <cstdio>
+#include <charconv>
 #include <cstring>
 #include <type_traits>
 
@@ -73,11 +73,15 @@ inline void put_encoded_modules(unsigned char*& at, const char* bytes, std::size
 }
 
 // ---- Printing parameters so that they read back exactly -------------------
+// The engine prints most parameters from their table (see module_type below);
+// these printers serve the types it cannot (a struct with a bit-field), in
+// the same text: the shortest form that reads back to the same value.
 
-inline void format_number(abi::TextSink* out, const char* fmt, double v) {
-  char buf[40];
-  int n = std::snprintf(buf, sizeof buf, fmt, v);
-  out->write(buf, static_cast<std::size_t>(n));
+template <class N>
+inline void format_number(abi::TextSink* out, N v) {
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  out->write(buf, static_cast<std::size_t>(r.ptr - buf));
 }
 
 template <class T>
@@ -95,22 +99,15 @@ inline void format_vector(const S* xs, int n, abi::TextSink* out) {
 
 template <class T>
 void format_value(const T& v, abi::TextSink* out) {
-  if constexpr (std::is_same_v<T, float>) {
-    format_number(out, "%.9g", v);
-  } else if constexpr (std::is_same_v<T, double>) {
-    format_number(out, "%.17g", v);
-  } else if constexpr (std::is_same_v<T, long double>) {
-    char buf[64];
-    int n = std::snprintf(buf, sizeof buf, "%.21Lg", v);
-    out->write(buf, static_cast<std::size_t>(n));
+  if constexpr (std::is_floating_point_v<T>) {
+    format_number(out, v);
   } else if constexpr (std::is_same_v<T, bool>) {
     out->write(v ? "1" : "0", 1);
-  } else if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {
-    char buf[32];
-    int n = std::is_signed_v<T>
-                ? std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v))
-                : std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(v));
-    out->write(buf, static_cast<std::size_t>(n));
+  } else if constexpr (std::is_enum_v<T>) {
+    format_number(out, static_cast<std::underlying_type_t<T>>(v));
+  } else if constexpr (std::is_integral_v<T>) {
+    if constexpr (std::is_signed_v<T>) format_number(out, static_cast<long long>(v));
+    else format_number(out, static_cast<unsigned long long>(v));
   } else if constexpr (vector_size<T> > 0) {
     format_vector(&v.x, vector_size<T>, out);
   } else if constexpr (std::is_same_v<T, const char*> || std::is_same_v<T, char*>) {
