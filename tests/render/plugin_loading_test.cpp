@@ -25,7 +25,7 @@ std::string loaded_libraries(const std::string& dir, const std::vector<std::stri
 
 std::string model_dir() {
   const std::string dir = make_temp_dir("plugin-loading");
-  std::ofstream(dir + "/model.l") << "#include <lpfgall.h>\nderivation length: 1;\nAxiom: F;\n";
+  std::ofstream(dir + "/model.l") << "#include <lpfgall.h>\nderivation length: 1;\nAxiom: F(1);\n";
   return dir;
 }
 
