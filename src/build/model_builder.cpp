@@ -27,6 +27,7 @@
 #endif
 #ifndef SYLVA_RUNTIME_PCH
 #define SYLVA_RUNTIME_PCH ""
+#define SYLVA_RUNTIME_PCH_COMPILER ""
 #endif
 
 namespace sylva::build {
@@ -78,15 +79,17 @@ struct ResolvedOptions {
   std::vector<std::string> defines;
   std::vector<std::string> include_dirs;
   std::string language;
-  // lpfgall.h precompiled by this program's build for its own runtime, or
-  // empty: the build's SYLVA_RUNTIME_PCH when the runtime is the build's and
-  // the header was made (an empty file where the build's compiler could not).
+  // lpfgall.h precompiled by this program's build, or empty: the build's
+  // SYLVA_RUNTIME_PCH when the runtime and the compiler are the ones it was
+  // made for and it was made (an empty file where that compiler could not).
   std::string runtime_pch;
 };
 
-std::string runtime_pch(const std::string& runtime) {
+std::string runtime_pch(const std::string& runtime, const std::string& compiler) {
   std::error_code ec;
-  if (runtime != SYLVA_RUNTIME_INCLUDE_DIR || fs::file_size(SYLVA_RUNTIME_PCH, ec) == 0 || ec) return "";
+  if (runtime != SYLVA_RUNTIME_INCLUDE_DIR || compiler != SYLVA_RUNTIME_PCH_COMPILER ||
+      fs::file_size(SYLVA_RUNTIME_PCH, ec) == 0 || ec)
+    return "";
   return SYLVA_RUNTIME_PCH;
 }
 
@@ -97,7 +100,7 @@ ResolvedOptions resolve(const BuildOptions& options) {
   r.defines = options.defines;
   r.include_dirs = options.include_dirs;
   r.language = options.language;
-  r.runtime_pch = runtime_pch(r.runtime);
+  r.runtime_pch = runtime_pch(r.runtime, r.compiler);
   return r;
 }
 
