@@ -25,6 +25,10 @@
 #ifndef SYLVA_RUNTIME_INCLUDE_DIR
 #define SYLVA_RUNTIME_INCLUDE_DIR ""
 #endif
+#ifndef SYLVA_RUNTIME_PCH
+#define SYLVA_RUNTIME_PCH ""
+#define SYLVA_RUNTIME_PCH_COMPILER ""
+#endif
 
 namespace sylva::build {
 namespace fs = std::filesystem;
@@ -33,11 +37,17 @@ namespace {
 
 constexpr double kDefaultCompileTimeout = 600;
 
-const std::vector<std::string> kCompileFlags = {
-    "-std=gnu++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-fno-gnu-unique",
+// How a model's code is generated: the same for the compile, for the
+// preprocessing that takes the precompiled runtime header and for that header.
+const std::vector<std::string> kCodeFlags = {
+    "-std=gnu++20", "-O2", "-fPIC", "-fvisibility=hidden", "-fno-gnu-unique",
     // Plain IEEE arithmetic as the reference implementation does it: no fused
     // multiply-add, so float results match to the last bit.
-    "-ffp-contract=off", "-w"};
+    "-ffp-contract=off"};
+const std::vector<std::string> kLinkFlags = {"-shared", "-w"};
+// The translator's own definitions for L+C models (lang/translator.cpp), which
+// the precompiled header must be made with to be taken.
+const std::vector<std::string> kModelDefines = {"-D__SYLVA__=1", "-DLINUX=1"};
 
 std::string env_or(const char* name, const std::string& fallback) {
   const char* value = std::getenv(name);
@@ -69,7 +79,19 @@ struct ResolvedOptions {
   std::vector<std::string> defines;
   std::vector<std::string> include_dirs;
   std::string language;
+  // lpfgall.h precompiled by this program's build, or empty: the build's
+  // SYLVA_RUNTIME_PCH when the runtime and the compiler are the ones it was
+  // made for and it was made (an empty file where that compiler could not).
+  std::string runtime_pch;
 };
+
+std::string runtime_pch(const std::string& runtime, const std::string& compiler) {
+  std::error_code ec;
+  if (runtime != SYLVA_RUNTIME_INCLUDE_DIR || compiler != SYLVA_RUNTIME_PCH_COMPILER ||
+      fs::file_size(SYLVA_RUNTIME_PCH, ec) == 0 || ec)
+    return "";
+  return SYLVA_RUNTIME_PCH;
+}
 
 ResolvedOptions resolve(const BuildOptions& options) {
   ResolvedOptions r;
@@ -78,12 +100,28 @@ ResolvedOptions resolve(const BuildOptions& options) {
   r.defines = options.defines;
   r.include_dirs = options.include_dirs;
   r.language = options.language;
+  r.runtime_pch = runtime_pch(r.runtime, r.compiler);
   return r;
 }
 
 lang::TranslatorOptions translator_options(const ResolvedOptions& r) {
   return lang::TranslatorOptions{r.compiler, r.runtime, r.defines, r.include_dirs,
-                                 r.language.empty() ? "auto" : r.language};
+                                 r.language.empty() ? "auto" : r.language, {}};
+}
+
+// The translator's options for a model about to be compiled: with the
+// precompiled runtime header when there is one. The compiler checks that it
+// was made by the same compiler with the same flags and definitions, and
+// reads lpfgall.h itself otherwise; a model with its own lpfgall.h beside it
+// still finds that first. The C++ then names the header in a pragma instead
+// of holding the runtime's text, and the compile reads it again.
+lang::TranslatorOptions compile_translator_options(const ResolvedOptions& r) {
+  lang::TranslatorOptions options = translator_options(r);
+  if (r.runtime_pch.empty()) return options;
+  options.preprocessor_flags = kCodeFlags;
+  options.preprocessor_flags.insert(options.preprocessor_flags.end(),
+                                    {"-fpch-preprocess", "-isystem", fs::path(r.runtime_pch).parent_path().string()});
+  return options;
 }
 
 // The key of the direct lookup: the model file itself and the tools.
@@ -98,6 +136,7 @@ std::string direct_key(const std::string& model_path, const std::string& source,
   for (const std::string& d : r.defines) h.add(d);
   for (const std::string& d : r.include_dirs) h.add("-I" + d);
   h.add("language=" + r.language);
+  h.add(r.runtime_pch.empty() ? "no pch" : file_stamp(r.runtime_pch));
   return h.hex();
 }
 
@@ -164,7 +203,8 @@ std::string compile_library(const ModelCache& cache, const std::string& key, con
     throw ModelError("cannot write " + source.string());
   }
   std::vector<std::string> argv = {r.compiler};
-  argv.insert(argv.end(), kCompileFlags.begin(), kCompileFlags.end());
+  argv.insert(argv.end(), kCodeFlags.begin(), kCodeFlags.end());
+  argv.insert(argv.end(), kLinkFlags.begin(), kLinkFlags.end());
   argv.insert(argv.end(), {"-o", output.string(), source.string()});
   if (options.verbose) fprintf(stderr, "sylva: compiling %s\n", model_path.c_str());
   const ProcessResult result = run_process(argv, timeout);
@@ -210,11 +250,14 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
     }
   }
 
-  lang::Translation translation = lang::translate_file(model_path, translator_options(r));
+  lang::Translation translation = lang::translate_file(model_path, compile_translator_options(r));
   ContentHash h;
   h.add(kCacheFormat);
   h.add(r.compiler);
-  for (const std::string& flag : kCompileFlags) h.add(flag);
+  for (const std::string& flag : kCodeFlags) h.add(flag);
+  for (const std::string& flag : kLinkFlags) h.add(flag);
+  // The C++ names the precompiled header, whose content it depends on.
+  h.add(r.runtime_pch.empty() ? "no pch" : file_stamp(r.runtime_pch));
   h.add(translation.cpp);
   const std::string key = h.hex();
   BuiltModel built{cache.library(key).string(), {}, false, translation.warnings};
@@ -237,6 +280,18 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
   cache.write_file(lookup_key + ".manifest", manifest_text(manifest));
   if (built.compiled_now) prune_cache_if_full(cache, key);
   return built;
+}
+
+void precompile_runtime(const std::string& output, const std::string& runtime_include_dir,
+                        const std::string& compiler) {
+  std::vector<std::string> argv = {compiler, "-x", "c++-header"};
+  argv.insert(argv.end(), kCodeFlags.begin(), kCodeFlags.end());
+  argv.insert(argv.end(), kModelDefines.begin(), kModelDefines.end());
+  argv.insert(argv.end(), {"-w", "-isystem", runtime_include_dir, (fs::path(runtime_include_dir) / "lpfgall.h").string(),
+                           "-o", output});
+  const ProcessResult result = run_process(argv, default_compile_timeout());
+  if (result.timed_out || result.exit_code != 0)
+    throw ModelError("cannot precompile " + runtime_include_dir + "/lpfgall.h with " + compiler + ": " + result.err);
 }
 
 }  // namespace sylva::build

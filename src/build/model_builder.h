@@ -47,4 +47,12 @@ std::string default_runtime_include_dir();
 // $SYLVA_COMPILE_TIMEOUT, else 600 seconds.
 double default_compile_timeout();
 
+// Precompiles the runtime's lpfgall.h into `output`, a GCC precompiled header
+// made as models are compiled, which translating and compiling a model take
+// in place of the header's text (once per build of this program: parsing the
+// runtime is most of a model's compile). Throws ModelError when the compiler
+// fails.
+void precompile_runtime(const std::string& output, const std::string& runtime_include_dir,
+                        const std::string& compiler);
+
 }  // namespace sylva::build

@@ -1,5 +1,6 @@
 // Texture images (lpfg: .rgb and .png; cpfg: the same), read with
-// GraphicsMagick, which also reads SGI's RGB format.
+// GraphicsMagick (in its plugin, texture_plugin.h), which also reads SGI's RGB
+// format.
 #pragma once
 
 #include <cstdint>

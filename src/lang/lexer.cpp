@@ -34,6 +34,9 @@ class Lexer {
 
   void source_line(std::string_view line) {
     if (system_ || !lpfgall_seen_) {
+      // lpfgall.h taken from its precompiled header leaves this pragma in
+      // place of its text.
+      if (is_lpfgall_pch(line)) lpfgall_seen_ = true;
       verbatim(line);
     } else if (!line.empty() && line.find_first_not_of(" \t") != std::string_view::npos &&
                line[line.find_first_not_of(" \t")] == '#') {
@@ -49,6 +52,14 @@ class Lexer {
  private:
   static bool is_lpfgall(std::string_view file) {
     return file == "lpfgall.h" || (file.size() > 10 && file.substr(file.size() - 10) == "/lpfgall.h");
+  }
+
+  static bool is_lpfgall_pch(std::string_view line) {
+    constexpr std::string_view pragma = "#pragma GCC pch_preprocess \"", suffix = ".gch\"";
+    if (line.substr(0, pragma.size()) != pragma || line.size() < pragma.size() + suffix.size() ||
+        line.substr(line.size() - suffix.size()) != suffix)
+      return false;
+    return is_lpfgall(line.substr(pragma.size(), line.size() - pragma.size() - suffix.size()));
   }
 
   int file_index(const std::string& name) {

@@ -135,6 +135,7 @@ Translation translate_file(const std::string& model_path, const TranslatorOption
 
   // lpfg preprocesses models on Linux with LINUX defined: models test it.
   std::vector<std::string> argv = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1", "-DLINUX=1"};
+  argv.insert(argv.end(), options.preprocessor_flags.begin(), options.preprocessor_flags.end());
   for (const std::string& d : options.defines) argv.push_back("-D" + d);
   argv.push_back("-isystem");
   argv.push_back(options.runtime_include_dir);

@@ -15,6 +15,9 @@ struct TranslatorOptions {
   // "auto" (or empty): cpfg if the file has `Lsystem:` ... `endlsystem` lines,
   // L+C otherwise; "cpfg" or "lc" to say which.
   std::string language = "auto";
+  // L+C models: flags for the preprocessor before all others; model_builder's
+  // let it take lpfgall.h from a precompiled header.
+  std::vector<std::string> preprocessor_flags;
 };
 
 // Whether a model's text is cpfg (an `Lsystem:` line and an `endlsystem`

@@ -1,5 +1,6 @@
 // Raster images of a Scene (LPFG manual 8.1.2, 8.1.3): OpenGL through OSMesa,
-// offscreen, so no display is needed, and PNG files written with libpng.
+// offscreen, so no display is needed, and PNG files written with libpng. Both
+// are done in the GL plugin (raster_plugin.h), opened by the first image.
 #pragma once
 
 #include <array>
@@ -64,7 +65,8 @@ struct ImageSettings {
 
 // Draws `scene` through the camera of `view` into a width x height image on
 // the palette's background (colour index 0). Throws
-// ModelError when OpenGL cannot be set up or the image is too large for it.
+// ModelError when OpenGL cannot be set up or the image is too large for it,
+// and when the GL plugin cannot be opened.
 Image render_image(const geometry::Scene& scene, const geometry::Palette& palette, const geometry::ViewParameters& view,
                    const ImageSettings& settings, int width, int height);
 

@@ -16,6 +16,8 @@ namespace sylva::io {
 
 enum class LineCap : std::uint8_t { Butt, Round, Square };
 
+constexpr float kSeamStroke = 0.5f;  // pixels; see Shape::hide_seams
+
 struct Shape {
   enum class Kind : std::uint8_t { Line, Polygon, Circle, Text };
   Kind kind = Kind::Line;
@@ -30,7 +32,7 @@ struct Shape {
   float stroke = 0;
   // Filled triangles of a mesh also get a thin outline of their own colour,
   // so that neighbours leave no antialiasing seam between them.
-  bool hide_seams = false;
+  bool hide_seams = false;  // with an outline kSeamStroke wide
   std::string text;
   geometry::Rgb color;
   float opacity = 1;

@@ -1,11 +1,8 @@
 // SVG is written as plain text so that every element can say which module
 // made it (cairo's SVG surface has no way to add attributes); PDF and
-// PostScript go through cairo. Both draw the same projected Drawing.
+// PostScript go through cairo, in its plugin (cairo_plugin.h). Both draw the
+// same projected Drawing.
 #include "render/vector_writer.h"
-
-#include <cairo-pdf.h>
-#include <cairo-ps.h>
-#include <cairo.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,16 +12,13 @@
 #include <memory>
 
 #include "io/output_file.h"
+#include "render/cairo_plugin.h"
 #include "render/vector_drawing.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
 
 namespace {
-
-enum class Format { Svg, Pdf, Ps, Eps };
-
-constexpr float kSeamStroke = 0.5f;  // pixels; see Shape::hide_seams
 
 // Three decimals are a thousandth of a pixel: finer than any output shows.
 std::string num(float v) {
@@ -149,102 +143,20 @@ std::string svg_document(const Drawing& d, const ModuleTypes* types) {
   return out;
 }
 
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
+VectorPrinter& printer() {
+  static VectorPrinter& plugin =
+      plugin_object<VectorPrinter>("libsylva_cairo.so", "sylva_vector_printer", "writes PDF and PostScript drawings");
+  return plugin;
 }
 
-void cairo_path_of(cairo_t* cr, const Shape& s) {
-  std::size_t i = 0;
-  std::vector<std::uint32_t> ends = s.loop_ends;
-  if (ends.empty()) ends.push_back(static_cast<std::uint32_t>(s.points.size()));
-  for (std::uint32_t end : ends) {
-    for (std::size_t first = i; i < end; ++i) {
-      if (i == first) cairo_move_to(cr, s.points[i].x, s.points[i].y);
-      else cairo_line_to(cr, s.points[i].x, s.points[i].y);
-    }
-    cairo_close_path(cr);
-  }
-}
-
-void cairo_shape(cairo_t* cr, const Shape& s, const Drawing& d) {
-  using Kind = Shape::Kind;
-  cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.opacity);
-  auto fill_or_outline = [&] {
-    if (s.stroke > 0) {
-      cairo_set_line_width(cr, s.stroke);
-      cairo_stroke(cr);
-    } else if (s.hide_seams) {
-      cairo_fill_preserve(cr);
-      cairo_set_line_width(cr, kSeamStroke);
-      cairo_stroke(cr);
-    } else {
-      cairo_fill(cr);
-    }
-  };
-  switch (s.kind) {
-    case Kind::Line:
-      cairo_set_line_width(cr, s.stroke);
-      cairo_set_line_cap(cr, d.line_cap == LineCap::Butt     ? CAIRO_LINE_CAP_BUTT
-                             : d.line_cap == LineCap::Square ? CAIRO_LINE_CAP_SQUARE
-                                                             : CAIRO_LINE_CAP_ROUND);
-      cairo_move_to(cr, s.points[0].x, s.points[0].y);
-      cairo_line_to(cr, s.points[1].x, s.points[1].y);
-      cairo_stroke(cr);
-      break;
-    case Kind::Polygon:
-      cairo_path_of(cr, s);
-      fill_or_outline();
-      break;
-    case Kind::Circle:
-      cairo_new_sub_path(cr);
-      cairo_arc(cr, s.points[0].x, s.points[0].y, s.radius, 0, 2 * M_PI);
-      fill_or_outline();
-      break;
-    case Kind::Text:
-      cairo_move_to(cr, s.points[0].x, s.points[0].y);
-      cairo_show_text(cr, s.text.c_str());
-      cairo_new_path(cr);
-      break;
-  }
-}
-
-std::string cairo_document(const Drawing& d, Format format, const std::string& path) {
-  std::string out;
-  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-  using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
-  Surface surface(format == Format::Pdf
-                      ? cairo_pdf_surface_create_for_stream(append_to_string, &out, d.width, d.height)
-                      : cairo_ps_surface_create_for_stream(append_to_string, &out, d.width, d.height),
-                  cairo_surface_destroy);
-  if (format == Format::Pdf) cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "Sylva");
-  if (format == Format::Eps) cairo_ps_surface_set_eps(surface.get(), 1);
-  {
-    Context cr(cairo_create(surface.get()), cairo_destroy);
-    cairo_set_line_join(cr.get(), CAIRO_LINE_JOIN_ROUND);
-    cairo_select_font_face(cr.get(), "Courier", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    cairo_set_font_size(cr.get(), d.font_size);
-    cairo_set_fill_rule(cr.get(), CAIRO_FILL_RULE_EVEN_ODD);
-    cairo_set_source_rgb(cr.get(), d.background.r, d.background.g, d.background.b);
-    cairo_paint(cr.get());
-    for (const Shape& s : d.shapes) cairo_shape(cr.get(), s, d);
-    cairo_show_page(cr.get());
-  }
-  cairo_surface_finish(surface.get());
-  cairo_status_t status = cairo_surface_status(surface.get());
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot draw the file: ") + cairo_status_to_string(status));
-  return out;
-}
-
-Format format_of(const std::string& path) {
-  if (path == "-") return Format::Svg;
+DrawingFormat format_of(const std::string& path) {
+  if (path == "-") return DrawingFormat::Svg;
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".svg") return Format::Svg;
-  if (ext == ".pdf") return Format::Pdf;
-  if (ext == ".ps") return Format::Ps;
-  if (ext == ".eps") return Format::Eps;
+  if (ext == ".svg") return DrawingFormat::Svg;
+  if (ext == ".pdf") return DrawingFormat::Pdf;
+  if (ext == ".ps") return DrawingFormat::Ps;
+  if (ext == ".eps") return DrawingFormat::Eps;
   throw ModelError(SourceLocation{path, 0, 0},
                    "unknown vector drawing format '" + ext + "': expected .svg, .pdf, .ps or .eps");
 }
@@ -254,10 +166,11 @@ Format format_of(const std::string& path) {
 void write_vector_drawing(const std::string& path, const geometry::Scene& scene, const geometry::Palette& palette,
                           const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
                           const ModuleTypes* types, int ps_linecap) {
-  const Format format = format_of(path);
+  const DrawingFormat format = format_of(path);
   const LineCap cap = ps_linecap == 0 ? LineCap::Butt : ps_linecap == 2 ? LineCap::Square : LineCap::Round;
   const Drawing drawing = project_scene(scene, palette, view, line_style, width, height, cap);
-  write_output_file(path, format == Format::Svg ? svg_document(drawing, types) : cairo_document(drawing, format, path));
+  write_output_file(path, format == DrawingFormat::Svg ? svg_document(drawing, types)
+                                                      : printer().document(drawing, format, path));
 }
 
 }  // namespace sylva::io

@@ -4,8 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "io/output_file.h"
-#include "render/png_renderer.h"
+#include "render/gl_renderer.h"
 #include "support/diagnostic.h"
 
 namespace sylva::io {
@@ -30,7 +29,9 @@ void append_bytes(png_structp png, png_bytep data, png_size_t length) {
 
 void no_flush(png_structp) {}
 
-std::string encode_png(const std::string& path, const Image& image) {
+}  // namespace
+
+std::string gl::encode_png(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3)
     throw ModelError(SourceLocation{path, 0, 0}, "cannot write an empty or malformed image");
@@ -59,9 +60,5 @@ std::string encode_png(const std::string& path, const Image& image) {
   png_write_end(w.png, nullptr);
   return out;
 }
-
-}  // namespace
-
-void write_png(const std::string& path, const Image& image) { write_output_file(path, encode_png(path, image)); }
 
 }  // namespace sylva::io

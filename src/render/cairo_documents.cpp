@@ -1,0 +1,118 @@
+// The cairo plugin (cairo_plugin.h): a Drawing as PDF or PostScript.
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo.h>
+
+#include <cmath>
+#include <memory>
+
+#include "render/cairo_plugin.h"
+#include "support/diagnostic.h"
+
+namespace sylva::io {
+
+namespace {
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+void cairo_path_of(cairo_t* cr, const Shape& s) {
+  std::size_t i = 0;
+  std::vector<std::uint32_t> ends = s.loop_ends;
+  if (ends.empty()) ends.push_back(static_cast<std::uint32_t>(s.points.size()));
+  for (std::uint32_t end : ends) {
+    for (std::size_t first = i; i < end; ++i) {
+      if (i == first) cairo_move_to(cr, s.points[i].x, s.points[i].y);
+      else cairo_line_to(cr, s.points[i].x, s.points[i].y);
+    }
+    cairo_close_path(cr);
+  }
+}
+
+void cairo_shape(cairo_t* cr, const Shape& s, const Drawing& d) {
+  using Kind = Shape::Kind;
+  cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.opacity);
+  auto fill_or_outline = [&] {
+    if (s.stroke > 0) {
+      cairo_set_line_width(cr, s.stroke);
+      cairo_stroke(cr);
+    } else if (s.hide_seams) {
+      cairo_fill_preserve(cr);
+      cairo_set_line_width(cr, kSeamStroke);
+      cairo_stroke(cr);
+    } else {
+      cairo_fill(cr);
+    }
+  };
+  switch (s.kind) {
+    case Kind::Line:
+      cairo_set_line_width(cr, s.stroke);
+      cairo_set_line_cap(cr, d.line_cap == LineCap::Butt     ? CAIRO_LINE_CAP_BUTT
+                             : d.line_cap == LineCap::Square ? CAIRO_LINE_CAP_SQUARE
+                                                             : CAIRO_LINE_CAP_ROUND);
+      cairo_move_to(cr, s.points[0].x, s.points[0].y);
+      cairo_line_to(cr, s.points[1].x, s.points[1].y);
+      cairo_stroke(cr);
+      break;
+    case Kind::Polygon:
+      cairo_path_of(cr, s);
+      fill_or_outline();
+      break;
+    case Kind::Circle:
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, s.points[0].x, s.points[0].y, s.radius, 0, 2 * M_PI);
+      fill_or_outline();
+      break;
+    case Kind::Text:
+      cairo_move_to(cr, s.points[0].x, s.points[0].y);
+      cairo_show_text(cr, s.text.c_str());
+      cairo_new_path(cr);
+      break;
+  }
+}
+
+std::string cairo_document(const Drawing& d, DrawingFormat format, const std::string& path) {
+  std::string out;
+  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+  using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+  Surface surface(format == DrawingFormat::Pdf
+                      ? cairo_pdf_surface_create_for_stream(append_to_string, &out, d.width, d.height)
+                      : cairo_ps_surface_create_for_stream(append_to_string, &out, d.width, d.height),
+                  cairo_surface_destroy);
+  if (format == DrawingFormat::Pdf) cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "Sylva");
+  if (format == DrawingFormat::Eps) cairo_ps_surface_set_eps(surface.get(), 1);
+  {
+    Context cr(cairo_create(surface.get()), cairo_destroy);
+    cairo_set_line_join(cr.get(), CAIRO_LINE_JOIN_ROUND);
+    cairo_select_font_face(cr.get(), "Courier", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr.get(), d.font_size);
+    cairo_set_fill_rule(cr.get(), CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_set_source_rgb(cr.get(), d.background.r, d.background.g, d.background.b);
+    cairo_paint(cr.get());
+    for (const Shape& s : d.shapes) cairo_shape(cr.get(), s, d);
+    cairo_show_page(cr.get());
+  }
+  cairo_surface_finish(surface.get());
+  cairo_status_t status = cairo_surface_status(surface.get());
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot draw the file: ") + cairo_status_to_string(status));
+  return out;
+}
+
+class CairoPrinter final : public VectorPrinter {
+ public:
+  std::string document(const Drawing& drawing, DrawingFormat format, const std::string& path) override {
+    return cairo_document(drawing, format, path);
+  }
+};
+
+}  // namespace
+
+}  // namespace sylva::io
+
+extern "C" SYLVA_PLUGIN_EXPORT sylva::io::VectorPrinter* sylva_vector_printer() {
+  static sylva::io::CairoPrinter printer;
+  return &printer;
+}
