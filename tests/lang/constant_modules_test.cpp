@@ -40,9 +40,11 @@ Code cpfg(const std::string& text) { return Code{token(TokenKind::Identifier, te
 template <class... T>
 std::string expected_bytes(abi::ModuleId id, T... values) {
   std::string bytes(reinterpret_cast<const char*>(&id), sizeof id);
-  if constexpr (sizeof...(T) == 0) return bytes;
-  ((bytes.append(reinterpret_cast<const char*>(&values), sizeof values)), ...);
-  return bytes + std::string(reinterpret_cast<const char*>(&id), sizeof id);
+  if constexpr (sizeof...(T) > 0) {
+    ((bytes.append(reinterpret_cast<const char*>(&values), sizeof values)), ...);
+    bytes.append(reinterpret_cast<const char*>(&id), sizeof id);
+  }
+  return bytes;
 }
 
 // What the compiled call writes.

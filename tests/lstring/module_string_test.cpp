@@ -1,7 +1,7 @@
 // The packed module string: [id][parameters][id] per module, or [id] alone
-// without parameters, walked forward
-// and backward with nothing but the table of sizes; views of part of it;
-// growth, moves and copies of the bytes; the buffer built from its end.
+// without parameters, walked forward and backward with nothing but the table
+// of sizes; views of part of it; growth, moves and copies of the bytes; the
+// buffer built from its end.
 #include <gtest/gtest.h>
 
 #include <cstring>
