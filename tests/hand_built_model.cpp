@@ -27,10 +27,12 @@ constexpr Formatter kFormatters[] = {&format_floats<0>, &format_floats<1>, &form
 
 void write_modules(abi::ModuleBuffer* out, std::initializer_list<Written> modules) {
   for (const Written& m : modules) {
-    out->reserve_more(abi::kModuleOverhead + m.params.size() * sizeof(float));
+    const std::size_t param_size = m.params.size() * sizeof(float);
+    out->reserve_more(abi::encoded_module_size(param_size));
     out->put_id(m.id);
-    std::memcpy(out->data + out->size, m.params.data(), m.params.size() * sizeof(float));
-    out->size += m.params.size() * sizeof(float);
+    if (!param_size) continue;
+    std::memcpy(out->data + out->size, m.params.data(), param_size);
+    out->size += param_size;
     out->put_id(m.id);
   }
 }

@@ -213,7 +213,7 @@ std::optional<std::string> constant_module_bytes(abi::ModuleId id, const std::ve
     const std::optional<Literal> value = literal_argument(args[k]);
     if (!value || !append(*value, bytes)) return std::nullopt;
   }
-  append_id(id, bytes);
+  if (!args.empty()) append_id(id, bytes);
   return bytes;
 }
 

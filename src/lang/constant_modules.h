@@ -13,10 +13,10 @@
 namespace sylva::lang {
 
 // The bytes `put_module<param_types...>(at, id, args...)` would write
-// ([id][parameters][id], see sylva/abi.h), or nullopt unless every argument
-// is a literal the translator converts exactly as the C++ compiler does
-// (decimal numbers, signed, parenthesized, cast to float) to a built-in
-// arithmetic type, and the count matches.
+// ([id][parameters][id], or [id] without parameters: see sylva/abi.h), or
+// nullopt unless every argument is a literal the translator converts exactly
+// as the C++ compiler does (decimal numbers, signed, parenthesized, cast to
+// float) to a built-in arithmetic type, and the count matches.
 std::optional<std::string> constant_module_bytes(abi::ModuleId id, const std::vector<std::string>& param_types,
                                                  const std::vector<Code>& args);
 

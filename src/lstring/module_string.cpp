@@ -116,9 +116,10 @@ void ModuleString::reserve(std::size_t bytes) {
 }
 
 void ModuleString::append_module(ModuleId id, const void* params, std::size_t param_size) {
-  buffer_.reserve_more(param_size + abi::kModuleOverhead);
+  buffer_.reserve_more(abi::encoded_module_size(param_size));
   buffer_.put_id(id);
-  if (param_size) std::memcpy(buffer_.data + buffer_.size, params, param_size);
+  if (!param_size) return;
+  std::memcpy(buffer_.data + buffer_.size, params, param_size);
   buffer_.size += param_size;
   buffer_.put_id(id);
 }

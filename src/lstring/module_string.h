@@ -1,6 +1,6 @@
 // The L-system string: modules packed one after another as
-// [id][parameters][id] (see sylva/abi.h), so it can be walked both ways with
-// nothing but the table of module sizes.
+// [id][parameters][id], or [id] without parameters (see sylva/abi.h), so it
+// can be walked both ways with nothing but the table of module sizes.
 #pragma once
 
 #include <cstddef>

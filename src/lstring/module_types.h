@@ -38,7 +38,8 @@ class ModuleTypes {
   std::size_t size() const { return types_.size(); }
   const Type& operator[](ModuleId id) const { return types_[id]; }
   const std::string& name(ModuleId id) const { return types_[id].name; }
-  // Bytes a module of this type takes in a string: parameters plus two ids.
+  // Bytes a module of this type takes in a string: parameters plus two ids,
+  // or one id without parameters.
   std::uint32_t encoded_size(ModuleId id) const { return encoded_sizes_[id]; }
   const std::uint32_t* encoded_sizes() const { return encoded_sizes_.data(); }
   std::optional<ModuleId> find(std::string_view name) const;

@@ -15,7 +15,9 @@ namespace {
 
 thread_local RunBudget* active_budget = nullptr;
 
-constexpr std::size_t kSmallestModuleBytes = 4;  // an id before and after, no parameters
+constexpr std::size_t kSmallestModuleBytes = abi::encoded_module_size(0);  // its id alone
+// String memory the default module limit allows each module: see default_run_limits.
+constexpr std::size_t kMemoryPerModule = 64;
 
 std::string bytes_text(std::size_t bytes) {
   static const char* const units[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
@@ -42,7 +44,7 @@ RunLimits default_run_limits() {
   return limits;
 }
 
-std::size_t max_modules_for_memory(std::size_t max_memory) { return max_memory / 16 / kSmallestModuleBytes; }
+std::size_t max_modules_for_memory(std::size_t max_memory) { return max_memory / kMemoryPerModule; }
 
 void RunBudget::start_clock() {
   deadline_ = limits_.timeout_seconds > 0

@@ -26,9 +26,9 @@ struct RunLimits {
 };
 
 // Defaults that keep a run from taking the machine down: half the physical
-// memory for strings, and as many modules as the smallest modules (4 bytes)
-// would fill in a sixteenth of it, as the turtle's geometry and the step's
-// second string need many times a module's bytes. No time limit.
+// memory for strings, and a module for every 64 bytes of it, as the turtle's
+// geometry and the step's second string need many times a module's bytes. No
+// time limit.
 RunLimits default_run_limits();
 // The module limit a memory limit implies (0 for none).
 std::size_t max_modules_for_memory(std::size_t max_memory);

@@ -69,7 +69,7 @@ TEST(RunLimits, MemoryStopsTheStepBeforeItAllocatesPastTheLimit) {
   const std::size_t limit = std::size_t{64} << 20;
   auto s = open(path, RunLimits{0, limit, 0});
   const std::string message = limit_message(*s);
-  // A module A takes 4 bytes: 2^24 of them fill 64 MiB, with the step's old
+  // A module A takes 2 bytes: 2^25 of them fill 64 MiB, with the step's old
   // string beside the new one a step or two sooner.
   EXPECT_NE(message.find("sylva: error: step 2"), std::string::npos) << message;
   EXPECT_NE(message.find("more than the limit of 64.0 MiB (--max-memory SIZE raises it)"), std::string::npos)

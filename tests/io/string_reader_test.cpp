@@ -44,7 +44,7 @@ TEST(StringReader, ReadsEveryParameterWithItsType) {
   EXPECT_TRUE(param_at<bool>(s, at + 20));
   EXPECT_EQ(param_at<double>(s, at + 21), 1.0 / 3.0);
   at += types[0].param_size + sizeof(ModuleId);
-  EXPECT_EQ(module_id_at(s.data(), at), 1);  // B
+  EXPECT_EQ(module_id_at(s.data(), at), 1);  // B: [id]
   at += types.encoded_size(1) + sizeof(ModuleId);
   const V2d w = param_at<V2d>(s, at);
   EXPECT_EQ(w.x, 0.5);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "lang/constant_modules.h"
+#include "sylva/runtime/modules.h"
 
 namespace sylva::test {
 namespace {
@@ -39,16 +40,35 @@ Code cpfg(const std::string& text) { return Code{token(TokenKind::Identifier, te
 template <class... T>
 std::string expected_bytes(abi::ModuleId id, T... values) {
   std::string bytes(reinterpret_cast<const char*>(&id), sizeof id);
-  ((bytes.append(reinterpret_cast<const char*>(&values), sizeof values)), ...);
-  return bytes + std::string(reinterpret_cast<const char*>(&id), sizeof id);
+  if constexpr (sizeof...(T) > 0) {
+    ((bytes.append(reinterpret_cast<const char*>(&values), sizeof values)), ...);
+    bytes.append(reinterpret_cast<const char*>(&id), sizeof id);
+  }
+  return bytes;
+}
+
+// What the compiled call writes.
+template <class... T>
+std::string put_module_bytes(abi::ModuleId id, T... values) {
+  std::string bytes(rt::module_bytes<T...>, '\0');
+  unsigned char* at = reinterpret_cast<unsigned char*>(bytes.data());
+  rt::put_module<T...>(at, id, values...);
+  EXPECT_EQ(at, reinterpret_cast<unsigned char*>(bytes.data()) + bytes.size());
+  return bytes;
 }
 
 std::optional<std::string> one(const std::string& type, const Code& arg) {
   return constant_module_bytes(7, {type}, {arg});
 }
 
-TEST(ConstantModules, AModuleWithoutParametersIsItsIdTwice) {
+TEST(ConstantModules, AModuleWithoutParametersIsItsIdAlone) {
   EXPECT_EQ(constant_module_bytes(300, {}, {}), expected_bytes(300));
+  EXPECT_EQ(expected_bytes(300).size(), sizeof(abi::ModuleId));
+}
+
+TEST(ConstantModules, TheBytesAreThosePutModuleWrites) {
+  EXPECT_EQ(constant_module_bytes(300, {}, {}), put_module_bytes(300));
+  EXPECT_EQ(constant_module_bytes(9, {"float", "int"}, {lc({"1"}), lc({"2"})}), put_module_bytes(9, 1.0f, 2));
 }
 
 TEST(ConstantModules, LiteralsConvertAsAnArgumentWould) {

@@ -1,6 +1,7 @@
-// The packed module string: [id][parameters][id] per module, walked forward
-// and backward with nothing but the table of sizes; views of part of it;
-// growth, moves and copies of the bytes; the buffer built from its end.
+// The packed module string: [id][parameters][id] per module, or [id] alone
+// without parameters, walked forward and backward with nothing but the table
+// of sizes; views of part of it; growth, moves and copies of the bytes; the
+// buffer built from its end.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -16,7 +17,7 @@ namespace sylva::test {
 namespace {
 
 // SB, EB, then P with a double, Q with nothing, R with three ints: modules of
-// 12, 4 and 16 bytes, so a walk that got a size wrong lands off a boundary.
+// 12, 2 and 16 bytes, so a walk that got a size wrong lands off a boundary.
 class ModuleStringTest : public ::testing::Test {
  protected:
   static constexpr ModuleId kSB = 0, kEB = 1, kP = 2, kQ = 3, kR = 4;
@@ -67,14 +68,29 @@ TEST_F(ModuleStringTest, EachModuleIsItsIdItsParametersAndItsIdAgain) {
   EXPECT_EQ(types_.encoded_size(kR), s.size_bytes());
 }
 
+TEST_F(ModuleStringTest, AModuleWithoutParametersIsItsIdAlone) {
+  ModuleString s;
+  add(s, kQ);
+  ASSERT_EQ(s.size_bytes(), sizeof(ModuleId));
+  EXPECT_EQ(types_.encoded_size(kQ), sizeof(ModuleId));
+  EXPECT_EQ(module_id_at(s.data(), 0), kQ);
+  EXPECT_EQ(module_id_before(s.data(), s.size_bytes()), kQ);
+  add_p(s, 4);
+  add(s, kQ);
+  const StringView v = s.view(types_);
+  EXPECT_EQ(forward_ids(v), (std::vector<ModuleId>{kQ, kP, kQ}));
+  EXPECT_EQ(backward_ids(v), (std::vector<ModuleId>{kQ, kP, kQ}));
+  EXPECT_EQ(v.previous(v.previous(v.end)), sizeof(ModuleId));
+}
+
 TEST_F(ModuleStringTest, WalksForwardAndBackward) {
   const ModuleString s = sample();
   const StringView v = s.view(types_);
   EXPECT_EQ(forward_ids(v), (std::vector<ModuleId>{kP, kQ, kR, kSB, kQ, kEB, kP}));
   EXPECT_EQ(backward_ids(v), (std::vector<ModuleId>{kP, kEB, kQ, kSB, kR, kQ, kP}));
   EXPECT_EQ(s.count_modules(types_), 7u);
-  // 12 + 4 + 16 + 4 + 4 + 4 + 12 bytes.
-  EXPECT_EQ(s.size_bytes(), 56u);
+  // 12 + 2 + 16 + 2 + 2 + 2 + 12 bytes.
+  EXPECT_EQ(s.size_bytes(), 48u);
   double last;
   std::memcpy(&last, module_params(s.data(), v.previous(v.end)), sizeof last);
   EXPECT_EQ(last, -2);
@@ -83,8 +99,8 @@ TEST_F(ModuleStringTest, WalksForwardAndBackward) {
 TEST_F(ModuleStringTest, AViewCoversPartOfTheString) {
   const ModuleString s = sample();
   StringView part = s.view(types_);
-  part.begin = 12 + 4;  // from R
-  part.end = part.begin + 16 + 4 + 4 + 4;  // through the branch
+  part.begin = 12 + 2;  // from R
+  part.end = part.begin + 16 + 2 + 2 + 2;  // through the branch
   EXPECT_EQ(forward_ids(part), (std::vector<ModuleId>{kR, kSB, kQ, kEB}));
   EXPECT_EQ(backward_ids(part), (std::vector<ModuleId>{kEB, kQ, kSB, kR}));
 }
@@ -139,7 +155,7 @@ TEST_F(ModuleStringTest, MovesAssignsAndTruncates) {
   ModuleString copy;
   copy.assign(moved.data(), moved.size_bytes());
   EXPECT_EQ(std::memcmp(copy.data(), moved.data(), size), 0);
-  copy.truncate(12 + 4);  // P(1.5) Q
+  copy.truncate(12 + 2);  // P(1.5) Q
   EXPECT_EQ(forward_ids(copy.view(types_)), (std::vector<ModuleId>{kP, kQ}));
   copy.clear();
   EXPECT_TRUE(copy.empty());
@@ -154,7 +170,7 @@ TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
     b.prepend(q.data(), q.size_bytes());
     b.prepend(p.data(), p.size_bytes());
   }
-  EXPECT_EQ(b.size_bytes(), 1000 * (12u + 4u));
+  EXPECT_EQ(b.size_bytes(), 1000 * (12u + 2u));
   const StringView v{b.data(), b.begin(), b.end(), types_.encoded_sizes()};
   const std::vector<ModuleId> ids = forward_ids(v);
   ASSERT_EQ(ids.size(), 2000u);

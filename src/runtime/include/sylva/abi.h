@@ -14,14 +14,18 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 10;
+inline constexpr std::uint32_t kAbiVersion = 11;
 
 using ModuleId = std::uint16_t;
 
-// A module is stored as [id][parameters][id]: the trailing id lets the string
-// be walked backward. Parameters are packed in declaration order without
-// padding and read with memcpy.
-inline constexpr std::size_t kModuleOverhead = 2 * sizeof(ModuleId);
+// A module with parameters is stored as [id][parameters][id], one without as
+// [id]. Either way a module begins and ends with its id, so the string can be
+// walked backward as well as forward with nothing but the encoded size of
+// each id. Parameters are packed in declaration order without padding and
+// read with memcpy.
+inline constexpr std::size_t encoded_module_size(std::size_t param_size) {
+  return param_size ? param_size + 2 * sizeof(ModuleId) : sizeof(ModuleId);
+}
 
 // A growable byte buffer of encoded modules. The engine allocates it and
 // supplies `grow`, so a model never calls an allocator of its own.

@@ -50,7 +50,7 @@ inline void put_param(unsigned char*& at, const T& value) {
 
 // Bytes one module with parameters T... takes in a string.
 template <class... T>
-inline constexpr std::size_t module_bytes = params_size<T...> + abi::kModuleOverhead;
+inline constexpr std::size_t module_bytes = abi::encoded_module_size(params_size<T...>);
 
 // Writes one module at `at` (room for it has been reserved) and advances
 // `at`. Arguments convert to the declared parameter types as they would in a
@@ -60,9 +60,11 @@ template <class... T>
 inline void put_module(unsigned char*& at, abi::ModuleId id, std::type_identity_t<T>... values) {
   std::memcpy(at, &id, sizeof id);
   at += sizeof id;
-  (put_param<T>(at, values), ...);
-  std::memcpy(at, &id, sizeof id);
-  at += sizeof id;
+  if constexpr (params_size<T...> != 0) {
+    (put_param<T>(at, values), ...);
+    std::memcpy(at, &id, sizeof id);
+    at += sizeof id;
+  }
 }
 
 // Writes `n` bytes of modules the translator encoded itself (those whose
