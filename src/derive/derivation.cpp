@@ -255,7 +255,7 @@ void Derivation::decompose() {
   rewrites_.clear();
   const int depth = maximum_depth(RuleKind::Decomposition);
   reset_lsystems();
-  expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
+  if (!decompose_in_parallel(depth)) expand(RuleKind::Decomposition, current_view(), 0, depth, next_, expansion_);
   release_deep_expansion();
   std::swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
@@ -299,14 +299,14 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
   const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
   const int depth = has_rules ? maximum_depth(RuleKind::Interpretation) : 1;
   if (has_rules) depth_warnings_.clear();
-  while (expansion_scratch_.empty()) expansion_scratch_.emplace_back();
+  while (expansion_.scratch.empty()) expansion_.scratch.emplace_back();
   reset_lsystems();
   std::uint32_t index = 0;
   std::size_t pos = src.begin;
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     if (has_rules && !rules_.forward(RuleKind::Interpretation, id).empty()) {
-      ModuleString& successor = expansion_scratch_[0];
+      ModuleString& successor = expansion_.scratch[0];
       successor.clear();
       std::size_t consumed = 0;
       if (depth < 1) {
@@ -315,7 +315,7 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
       } else if (apply_forward(RuleKind::Interpretation, src, pos, successor, interpretation_out_, true, &consumed)) {
         interpretation_out_.clear();
         keyed_random::key.level = keyed_random::mix(0, pos);
-        expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_);
+        expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_, expansion_);
         keyed_random::key.level = 0;
         const StringView shown = interpretation_out_.view(types_);
         for (std::size_t at = shown.begin; at < shown.end; at = shown.next(at))
@@ -557,29 +557,32 @@ void Derivation::derive_backward() {
 
 // ---- decomposition and interpretation -----------------------------------------
 
-void Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out) {
+std::size_t Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out,
+                               Expansion& expansion, std::size_t stop, std::size_t from) {
   // An explicit stack of the levels being written out rather than recursion,
   // so that a depth of millions needs no machine stack. A level's
   // successors are built in the scratch string of its place on the stack,
   // which stays untouched while the levels below read their own.
-  std::vector<ExpansionFrame>& frames = expansion_frames_;
+  std::vector<ExpansionFrame>& frames = expansion.frames;
+  std::deque<ModuleString>& scratch = expansion.scratch;
   frames.clear();
   StringView src = source;
-  std::size_t pos = src.begin;
+  const std::size_t top_end = std::min(stop, source.end);
+  std::size_t pos = from == SIZE_MAX ? src.begin : from;
   std::size_t run = pos;
   auto flush = [&] {
     if (pos > run) out.append(src.data + run, pos - run);
   };
   // Where the current level builds a successor: the scratch string after its source's.
   auto scratch_below = [&] {
-    while (expansion_scratch_.size() <= frames.size() + 1) expansion_scratch_.emplace_back();
-    return &expansion_scratch_[frames.size() + 1];
+    while (scratch.size() <= frames.size() + 1) scratch.emplace_back();
+    return &scratch[frames.size() + 1];
   };
   ModuleString* successor = scratch_below();
   // The L-system stack follows the string as it is written out: modules
   // kept as they are here, successors one level down.
   for (;;) {
-    if (pos >= src.end) {
+    if (pos >= (frames.empty() ? top_end : src.end)) {
       flush();
       if (frames.empty()) break;
       // Back to the level above, past the predecessor just expanded.
@@ -603,7 +606,10 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
     flush();
     std::size_t consumed = 0;
     if (depth >= max_depth) {
-      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) {
+        if (expansion.defer_warnings) expansion.depth_reached.push_back(id);
+        else warn_depth_reached(kind, id, max_depth);
+      }
     } else {
       successor->clear();
       if (apply_forward(kind, src, pos, *successor, out, true, &consumed)) {
@@ -611,13 +617,13 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
           // The level ends with this successor: it is replaced rather than
           // kept waiting, so a chain of last modules (A --> B A) takes no
           // more memory however deep it goes.
-          std::swap(expansion_scratch_[frames.size()], *successor);
+          std::swap(scratch[frames.size()], *successor);
         } else {
           frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth, keyed_random::key.level});
         }
         keyed_random::key.level = keyed_random::mix(keyed_random::key.level, pos);
         ++depth;
-        src = expansion_scratch_[frames.size()].view(types_);
+        src = scratch[frames.size()].view(types_);
         pos = run = src.begin;
         successor = scratch_below();
         continue;
@@ -628,13 +634,14 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
     out.append(src.data + pos, n - pos);
     pos = run = n;
   }
+  return pos;
 }
 
 void Derivation::release_deep_expansion() {
   // A pass that went very deep leaves no lasting memory behind.
   constexpr std::size_t kKept = 64;
-  if (expansion_scratch_.size() > kKept) expansion_scratch_.resize(kKept);
-  if (expansion_frames_.capacity() > kKept) std::vector<ExpansionFrame>().swap(expansion_frames_);
+  if (expansion_.scratch.size() > kKept) expansion_.scratch.resize(kKept);
+  if (expansion_.frames.capacity() > kKept) std::vector<ExpansionFrame>().swap(expansion_.frames);
 }
 
 int Derivation::maximum_depth(RuleKind kind) const {

@@ -4,6 +4,7 @@
 // the axiom and every step, and interpretation rules on demand.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <optional>
@@ -167,8 +168,14 @@ class Derivation {
   // Where the chunks of a parallel pass over `src` start; none when the
   // string is too short to split.
   std::vector<std::size_t> chunk_starts(const StringView& src) const;
-  // A forward step on several threads; false (nothing done) where it must be serial.
+  // A forward step, or decomposition, on several threads into next_; false
+  // (nothing done) where it must be serial.
   bool derive_forward_in_parallel();
+  bool decompose_in_parallel(int max_depth);
+  // The chunks of `src` starting at `starts`, each passed through `range`
+  // (from, to, out; returns where it stopped), joined into next_.
+  using RangePass = std::function<std::size_t(std::size_t chunk, std::size_t from, std::size_t to, ModuleString& out)>;
+  void run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, const RangePass& range);
   // Productions applied to the modules of `src` from `from` until the first
   // one at or past `to`, appended to `out`; returns where it stopped (past
   // `to` when a predecessor of several modules or a cut spans it).
@@ -190,9 +197,6 @@ class Derivation {
   void derive_backward();
   // One step of a Gillespie group (gillespie_step.cpp): one reaction fires.
   void derive_gillespie();
-  // Decomposition or interpretation: rules applied to each module and again
-  // to its successors, up to max_depth levels, without recursion.
-  void expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out);
   // A level of expand() waiting for the successor it expanded to be written.
   struct ExpansionFrame {
     StringView source;
@@ -202,6 +206,21 @@ class Derivation {
     int depth;
     std::uint64_t random_level;  // keyed_random::Key::level of `source`
   };
+  // What expand() works in: one per thread expanding.
+  struct Expansion {
+    std::deque<ModuleString> scratch;  // one per level of the stack
+    std::vector<ExpansionFrame> frames;
+    // Modules that reached the maximum depth, in the order met, when their
+    // warnings are given later (a chunk of a parallel pass); else given at once.
+    bool defer_warnings = false;
+    std::vector<ModuleId> depth_reached;
+  };
+  // Decomposition or interpretation: rules applied to each module and again
+  // to its successors, up to max_depth levels, without recursion. Expands
+  // the modules of `source` from `from` (its start by default) until the
+  // first at or past `stop` (its end by default); returns where it stopped.
+  std::size_t expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out,
+                     Expansion& expansion, std::size_t stop = SIZE_MAX, std::size_t from = SIZE_MAX);
   void release_deep_expansion();
 
   // Tries the rules for the module at `pos`; on success returns true with
@@ -233,8 +252,7 @@ class Derivation {
   ModuleString successor_;  // backward derivation builds each successor here
   ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;
-  std::deque<ModuleString> expansion_scratch_;  // one per level of expand()'s stack
-  std::vector<ExpansionFrame> expansion_frames_;
+  Expansion expansion_;  // of the serial passes
   std::set<std::pair<int, ModuleId>> depth_warnings_;
   int steps_done_ = 0;
   bool ring_ = false;

@@ -61,7 +61,7 @@ std::string Derivation::parallel_explanation() const {
     text += std::string(kind == abi::RuleKind::Production ? "productions" : "decomposition") + ": " +
             (why.empty() ? "parallel on " + std::to_string(threads_) + " threads for strings of " +
                                std::to_string(2 * min_chunk_bytes_ >> 10) + " KiB or more" +
-                               (kind == abi::RuleKind::Production ? " (forward steps, births not tracked)" : "")
+                               (kind == abi::RuleKind::Production ? " (forward steps, " : " (") + "births not tracked)"
                          : "serial: " + why) +
             "\n";
   }
@@ -117,6 +117,33 @@ bool Derivation::derive_forward_in_parallel() {
   const StringView src = current_view();
   const std::vector<std::size_t> starts = chunk_starts(src);
   if (starts.size() < 2) return false;
+  run_in_chunks(src, starts, [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
+    out.reserve(affordable_reserve(to - std::min(from, to)));
+    return forward_range(src, from, to, out);
+  });
+  return true;
+}
+
+bool Derivation::decompose_in_parallel(int max_depth) {
+  if (!decomposition_parallel_ || tracking_births_) return false;
+  const StringView src = current_view();
+  const std::vector<std::size_t> starts = chunk_starts(src);
+  if (starts.size() < 2) return false;
+  std::vector<Expansion> expansions(starts.size());
+  run_in_chunks(src, starts, [&](std::size_t c, std::size_t from, std::size_t to, ModuleString& out) {
+    Expansion& expansion = expansions[c];
+    expansion.defer_warnings = true;
+    expansion.depth_reached.clear();
+    keyed_random::key = {};
+    return expand(abi::RuleKind::Decomposition, src, 0, max_depth, out, expansion, to, from);
+  });
+  // The warnings of the chunks, in the order a serial pass meets them.
+  for (const Expansion& expansion : expansions)
+    for (ModuleId id : expansion.depth_reached) warn_depth_reached(abi::RuleKind::Decomposition, id, max_depth);
+  return true;
+}
+
+void Derivation::run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, const RangePass& range) {
   const std::size_t n = starts.size();
   auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
   struct Chunk {
@@ -130,8 +157,7 @@ bool Derivation::derive_forward_in_parallel() {
     chunk.out.clear();
     chunk.failure = nullptr;
     try {
-      chunk.out.reserve(affordable_reserve(end_of(c) - std::min(from, end_of(c))));
-      chunk.reached = forward_range(src, from, end_of(c), chunk.out);
+      chunk.reached = range(c, from, end_of(c), chunk.out);
     } catch (...) {
       chunk.failure = std::current_exception();
     }
@@ -139,7 +165,8 @@ bool Derivation::derive_forward_in_parallel() {
   run_tasks(threads_, n, [&](std::size_t c) { rewrite(c, starts[c]); });
   // A chunk whose first modules the one before rewrote (a predecessor of
   // several modules, or a cut, across the boundary) is rewritten again from
-  // where that one stopped, as a serial pass would go on.
+  // where that one stopped, as a serial pass would go on. A failure is the
+  // serial pass's only where that pass would have got to it.
   std::size_t total = 0;
   for (std::size_t c = 0; c < n; ++c) {
     if (c > 0 && chunks[c - 1].reached != starts[c]) {
@@ -164,7 +191,6 @@ bool Derivation::derive_forward_in_parallel() {
     chunks[c].out = ModuleString();
   });
   next_.buffer()->size = total;
-  return true;
 }
 
 }  // namespace sylva::derive

@@ -3,6 +3,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <vector>
 #include <utility>
 
 namespace sylva::lang {
@@ -99,7 +100,28 @@ struct Definition {
   Code params;
   Code body;
   bool opaque = false;
+  // By parameter: a non-const reference or pointer, which the function may
+  // write through; a call must pass the caller's own variable there.
+  std::vector<bool> writable;
 };
+
+// The comma-separated parts of code[begin, end) at its top level, as ranges.
+std::vector<std::pair<std::size_t, std::size_t>> split_top_level(const Code& code, std::size_t begin, std::size_t end) {
+  std::vector<std::pair<std::size_t, std::size_t>> parts;
+  int depth = 0;
+  std::size_t from = begin;
+  for (std::size_t k = begin; k <= end; ++k) {
+    if (k < end) {
+      const Token& t = code[k];
+      if (t.is_punct("(") || t.is_punct("<") || t.is_punct("[") || t.is_punct("{")) ++depth;
+      if (t.is_punct(")") || t.is_punct(">") || t.is_punct("]") || t.is_punct("}")) --depth;
+      if (!(depth == 0 && t.is_punct(","))) continue;
+    }
+    if (k > from) parts.emplace_back(from, k);
+    from = k + 1;
+  }
+  return parts;
+}
 
 class Analysis {
  public:
@@ -170,6 +192,7 @@ class Analysis {
       Definition d;
       d.params.assign(code.begin() + static_cast<std::ptrdiff_t>(open + 1),
                       code.begin() + static_cast<std::ptrdiff_t>(close));
+      d.writable = writable_params(d.params);
       if (code[at].is_punct("{")) {
         const std::size_t end = matching_forward(code, at);
         d.body.assign(code.begin() + static_cast<std::ptrdiff_t>(at), code.begin() + static_cast<std::ptrdiff_t>(end));
@@ -186,32 +209,51 @@ class Analysis {
   std::string function_reason(const Definition& d) {
     if (d.opaque) return "has a form the analysis does not follow";
     Scopes scopes(1);
-    // Parameters: each is the function's own unless it refers to (or points
-    // at) something the caller has.
-    std::size_t begin = 0;
-    int depth = 0;
-    for (std::size_t k = 0; k <= d.params.size(); ++k) {
-      const bool end = k == d.params.size();
-      if (!end && (d.params[k].is_punct("(") || d.params[k].is_punct("<") || d.params[k].is_punct("[")))
-        ++depth;
-      if (!end && (d.params[k].is_punct(")") || d.params[k].is_punct(">") || d.params[k].is_punct("]")))
-        --depth;
-      if (!end && !(depth == 0 && d.params[k].is_punct(","))) continue;
-      bool is_const = false, indirect = false;
+    // Parameters are the function's own: what it writes through a reference
+    // or pointer, the caller must own (checked at each call).
+    for (const auto& [begin, end] : split_top_level(d.params, 0, d.params.size())) {
       std::string name;
-      for (std::size_t j = begin; j < k; ++j) {
-        const Token& p = d.params[j];
-        if (p.is_punct("=")) break;
-        if (p.is_ident("const")) is_const = true;
-        if (p.is_punct("&") || p.is_punct("*") || p.is_punct("&&")) indirect = true;
-        if (p.is_ident()) name = p.text;
-      }
-      if (indirect && !is_const) return "takes a parameter by non-const reference or pointer";
+      for (std::size_t j = begin; j < end && !d.params[j].is_punct("="); ++j)
+        if (d.params[j].is_ident()) name = d.params[j].text;
       if (!name.empty()) scopes.back()[name] = true;
-      begin = k + 1;
     }
     Body body{BodyPart{BodyPart::kCode, d.body, {}, {}, abi::kLeft}};
     return body_reason(body, scopes);
+  }
+
+  static std::vector<bool> writable_params(const Code& params) {
+    std::vector<bool> writable;
+    for (const auto& [begin, end] : split_top_level(params, 0, params.size())) {
+      bool is_const = false, indirect = false;
+      for (std::size_t j = begin; j < end && !params[j].is_punct("="); ++j) {
+        if (params[j].is_ident("const")) is_const = true;
+        if (params[j].is_punct("&") || params[j].is_punct("*") || params[j].is_punct("&&")) indirect = true;
+      }
+      writable.push_back(indirect && !is_const);
+    }
+    return writable;
+  }
+
+  // Why the arguments of a call of the model's function `name`, between the
+  // parentheses at `open`, hand it something not the caller's own to write.
+  std::string arguments_reason(const std::string& name, const Code& code, std::size_t open, const Scopes& scopes,
+                               const Pending& pending) {
+    const auto d = definitions_.find(name);
+    if (d == definitions_.end()) return "";
+    const auto args = split_top_level(code, open + 1, matching_forward(code, open));
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      bool writable = false;
+      for (const Definition& def : d->second) writable |= i < def.writable.size() && def.writable[i];
+      if (!writable) continue;
+      auto [begin, end] = args[i];
+      if (code[begin].is_punct("&")) ++begin;
+      std::size_t k = begin + 1;
+      while (k < end && (code[k].is_punct(".") || code[k].is_ident() || code[k].is_punct("[")))
+        k = code[k].is_punct("[") ? matching_forward(code, k) + 1 : k + 1;
+      if (begin >= end || !code[begin].is_ident() || k != end || !owned(scopes, pending, code[begin].text))
+        return "passes `" + name + "` something not its own to write";
+    }
+    return "";
   }
 
   // Why calling `name` (as written, with its qualification) is unsafe, or empty.
@@ -294,25 +336,37 @@ class Analysis {
     auto where = [&](std::size_t k) { return code[k].line > 0 ? " (line " + std::to_string(code[k].line) + ")" : ""; };
     auto starts_expression = [](const Token& t) { return t.is_ident() && !kExpressionWords.count(t.text); };
     std::size_t declared_at = code.size();  // the name just declared, whose `=` initializes
+    int nesting = 0;             // brackets open
+    int declaration_nesting = -1;  // where a declaration goes on after a comma; -1: none
     for (std::size_t k = 0; k < code.size(); ++k) {
       const Token& t = code[k];
       const Token* prev = k > 0 ? &code[k - 1] : nullptr;
       const Token* next = k + 1 < code.size() ? &code[k + 1] : nullptr;
+      if (t.is_punct("(") || t.is_punct("[") || t.is_punct("{")) ++nesting;
+      if ((t.is_punct(")") || t.is_punct("]") || t.is_punct("}")) && --nesting < declaration_nesting)
+        declaration_nesting = -1;
+      if (t.is_punct(";")) declaration_nesting = -1;
       if (t.is_ident()) {
         if (auto bad = kUnsafeWords.find(t.text); bad != kUnsafeWords.end()) return bad->second + where(k);
         // A declared name follows a type (an identifier that starts no
-        // expression); `T& x` and `T* x` declare names that are not the body's own.
-        const bool after_type = prev && starts_expression(*prev);
+        // expression), or a comma in a declaration (T a = 1, b;); `T& x`
+        // and `T* x` declare names that are not the body's own.
+        const bool after_comma = declaration_nesting == nesting && prev && prev->is_punct(",");
+        const bool after_type = (prev && starts_expression(*prev)) || after_comma;
         if (after_type || (prev && (prev->is_punct("&") || prev->is_punct("*")) && k >= 2 &&
-                           starts_expression(code[k - 2]))) {
+                           ((starts_expression(code[k - 2]) && starts_statement(code, k - 2)) ||
+                            (declaration_nesting == nesting && code[k - 2].is_punct(","))))) {
           (paren_depth(code, k) > 0 ? pending : scopes.back())[t.text] = after_type;
           declared_at = k;
+          declaration_nesting = nesting;
         }
         if (!next || !next->is_punct("(") || kNotCalls.count(t.text) || after_type) continue;
         if (prev && prev->is_punct("->")) return "calls `" + t.text + "` through a pointer" + where(k);
         if (prev && prev->is_punct(".")) {
           if (definitions_.count(t.text)) {
             if (std::string why = call_reason("", t.text); !why.empty()) return why + where(k);
+            if (std::string why = arguments_reason(t.text, code, k + 1, scopes, pending); !why.empty())
+              return why + where(k);
             continue;
           }
           if (kReadingMethods.count(t.text)) continue;
@@ -326,6 +380,9 @@ class Analysis {
           qualifier = code[first - 2].text + "::" + qualifier;
         if (first >= 1 && code[first - 1].is_punct("::")) qualifier = "::" + qualifier;
         if (std::string why = call_reason(qualifier, t.text); !why.empty()) return why + where(k);
+        if (qualifier.empty())
+          if (std::string why = arguments_reason(t.text, code, k + 1, scopes, pending); !why.empty())
+            return why + where(k);
         continue;
       }
       if (t.kind != TokenKind::Punct) continue;
@@ -389,6 +446,17 @@ class Analysis {
       return "calls a function through an expression";
     }
     return "";
+  }
+
+  // Whether the type name at `k` may begin a declaration (T* x), rather
+  // than end an operand (a * x).
+  static bool starts_statement(const Code& code, std::size_t k) {
+    if (k == 0) return true;
+    const Token& before = code[k - 1];
+    static const Names punctuation = {";", "{", "}", "(", ")", ",", "::", ">"};
+    static const Names words = {"const", "volatile", "constexpr", "unsigned", "signed", "struct", "class"};
+    return (before.kind == TokenKind::Punct && punctuation.count(before.text)) ||
+           (before.is_ident() && words.count(before.text));
   }
 
   static int paren_depth(const Code& code, std::size_t k) {

@@ -22,18 +22,18 @@ namespace fs = std::filesystem;
 // keep the models whose strings grow fast quick.
 constexpr int kMaxSteps = 12;
 
-struct Run {
+struct Derived {
   std::string string;  // the final string, or the error that ended the run
   std::string explanation;
 };
 
-Run derive(const std::string& model, int threads, bool keyed = false, int steps = -1) {
+Derived derive(const std::string& model, int threads, bool keyed = false, int steps = -1) {
   SimulationOptions options;
   options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
   options.threads = threads;
   options.keyed_random = keyed;
   options.parallel_chunk_bytes = 48;
-  Run run;
+  Derived run;
   try {
     Simulation simulation(model, options, [](const std::string&) {});
     run.explanation = simulation.parallel_explanation();
@@ -62,7 +62,7 @@ TEST(ParallelDerivation, EveryModelGivesTheSerialStringOnFourThreads) {
   int parallel = 0;
   for (const std::string& model : all_models()) {
     SCOPED_TRACE(model);
-    const Run one = derive(model, 1), four = derive(model, 4);
+    const Derived one = derive(model, 1), four = derive(model, 4);
     EXPECT_EQ(one.string, four.string);
     if (four.explanation.find("productions: parallel") != std::string::npos) ++parallel;
   }
@@ -82,7 +82,7 @@ TEST(ParallelDerivation, ExplainsWhichRuleKeepsARunSerial) {
                                             "  count = count + 1;\n"
                                             "  produce A A;\n"
                                             "}\n");
-  const Run run = derive(model, 4);
+  const Derived run = derive(model, 4);
   EXPECT_NE(run.explanation.find("productions: serial: "), std::string::npos) << run.explanation;
   EXPECT_NE(run.explanation.find("counter.l:6: production assigns `count`"), std::string::npos) << run.explanation;
   EXPECT_EQ(run.string, "A A A A A A A A\n");
@@ -114,13 +114,13 @@ const char* const kStochastic =
 
 TEST(ParallelDerivation, KeyedRandomGivesOneStringAtAnyThreadCount) {
   const std::string model = write_temp_file("parallel-keyed", "stochastic.l", kStochastic);
-  const Run one = derive(model, 1, true), two = derive(model, 2, true), four = derive(model, 4, true);
+  const Derived one = derive(model, 1, true), two = derive(model, 2, true), four = derive(model, 4, true);
   EXPECT_EQ(four.explanation.find("serial"), std::string::npos) << four.explanation;
   EXPECT_GT(one.string.size(), 1000u);
   EXPECT_EQ(one.string, two.string);
   EXPECT_EQ(one.string, four.string);
   // lpfg's sequence keeps productions that draw serial, and its own string.
-  const Run lpfg = derive(model, 4, false);
+  const Derived lpfg = derive(model, 4, false);
   EXPECT_NE(lpfg.explanation.find("calls ran()"), std::string::npos) << lpfg.explanation;
   EXPECT_EQ(lpfg.string, derive(model, 1, false).string);
   EXPECT_NE(lpfg.string, one.string);

@@ -37,6 +37,13 @@ TEST(ParallelSafety, ReadingGlobalsAndCallingPureModelFunctionsIsSafe) {
   EXPECT_EQ(reason(globals, "produce A(grow(x, V3f(0, 0, 1)) * scale);"), "");
 }
 
+TEST(ParallelSafety, FunctionsMayWriteWhatTheCallerOwns) {
+  const std::string update = "struct Cell { float a; };\nbool Update(Cell& c, float d, Cell& out) { c.a = d; out = c; return true; }\n";
+  EXPECT_EQ(reason(update, "Cell c, d; Cell e; if (Update(e, x, d)) produce A(e.a); produce A(x);"), "");
+  EXPECT_EQ(reason(update + "Cell g;", "Cell e; Update(e, x, g); produce A(x);"),
+            "passes `Update` something not its own to write (line 7)");
+}
+
 TEST(ParallelSafety, AssigningAGlobalIsUnsafe) {
   EXPECT_EQ(reason("int count = 0;", "count = count + 1; produce A(x);"), "assigns `count`, which is not its own (line 5)");
   EXPECT_EQ(reason("int count = 0;", "++count; produce A(x);"), "changes `count`, which is not its own (line 5)");
@@ -59,8 +66,8 @@ TEST(ParallelSafety, SideEffectsAndUnknownCallsAreUnsafe) {
   EXPECT_EQ(reason("", "produce A(func(1, x));"), "calls `func`, which is not known to be pure (line 5)");
   EXPECT_EQ(reason("int n;\nvoid bump() { n++; }", "bump(); produce A(x);"),
             "calls `bump`, which changes `n`, which is not its own (line 3) (line 6)");
-  EXPECT_EQ(reason("void take(float& v) { v = 1; }", "take(x); produce A(x);"),
-            "calls `take`, which takes a parameter by non-const reference or pointer (line 5)");
+  EXPECT_EQ(reason("float g;\nvoid take(float& v) { v = 1; }", "take(g); produce A(x);"),
+            "passes `take` something not its own to write (line 6)");
 }
 
 TEST(ParallelSafety, RanIsSafeOnlyWhereItIsKeyed) {
