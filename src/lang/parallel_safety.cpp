@@ -126,7 +126,6 @@ std::vector<std::pair<std::size_t, std::size_t>> split_top_level(const Code& cod
 class Analysis {
  public:
   explicit Analysis(const Model& model) {
-    for (const ModuleDecl& m : model.modules) module_names_.insert(m.name);
     for (const Item& item : model.items)
       if (const Code* code = std::get_if<Code>(&item)) collect_definitions(*code);
     for (const Definition& d : definitions_["operator"]) {
@@ -172,9 +171,8 @@ class Analysis {
       if (t.is_ident("operator")) {
         name = "operator";
         open = k + 1;
+        if (k + 3 < code.size() && code[k + 1].is_punct("(") && code[k + 2].is_punct(")")) open = k + 3;  // operator()
         while (open < code.size() && !code[open].is_punct("(")) ++open;
-        if (open + 1 < code.size() && code[open + 1].is_punct(")") && k + 1 < open &&
-            code[k + 1].is_punct("(")) open += 2;  // operator()(...)
       } else if (t.is_ident() && code[k + 1].is_punct("(") && !kNotCalls.count(t.text)) {
         name = t.text;
         open = k + 1;
@@ -499,7 +497,6 @@ class Analysis {
     return "";
   }
 
-  Names module_names_;
   Names types_;
   std::map<std::string, std::vector<Definition>, std::less<>> definitions_;
   struct Verdict {

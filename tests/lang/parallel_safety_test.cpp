@@ -20,7 +20,7 @@ lang::RuleSafety only_rule(const lang::Model& model) {
 }
 
 std::string reason(const std::string& globals_and_functions, const std::string& body) {
-  return only_rule(lang::parse_lc_text("module A(float);\n" + globals_and_functions + "\nA(x) :\n{\n" + body + "\n}\n"))
+  return only_rule(parse_lc_text("module A(float);\n" + globals_and_functions + "\nA(x) :\n{\n" + body + "\n}\n"))
       .reason;
 }
 
@@ -71,14 +71,14 @@ TEST(ParallelSafety, SideEffectsAndUnknownCallsAreUnsafe) {
 }
 
 TEST(ParallelSafety, RanIsSafeOnlyWhereItIsKeyed) {
-  const lang::RuleSafety direct = only_rule(lang::parse_lc_text("module A(float);\nA(x) : { produce A(ran(x)); }\n"));
+  const lang::RuleSafety direct = only_rule(parse_lc_text("module A(float);\nA(x) : { produce A(ran(x)); }\n"));
   EXPECT_EQ(direct.reason, "");
   EXPECT_TRUE(direct.draws_random);
   const lang::RuleSafety through = only_rule(
-      lang::parse_lc_text("module A(float);\nfloat jitter(float v) { return v + ran(1); }\nA(x) : { produce A(jitter(x)); }\n"));
+      parse_lc_text("module A(float);\nfloat jitter(float v) { return v + ran(1); }\nA(x) : { produce A(jitter(x)); }\n"));
   EXPECT_EQ(through.reason, "");
   EXPECT_TRUE(through.draws_random);
-  EXPECT_FALSE(only_rule(lang::parse_lc_text("module A(float);\nA(x) : { produce A(x); }\n")).draws_random);
+  EXPECT_FALSE(only_rule(parse_lc_text("module A(float);\nA(x) : { produce A(x); }\n")).draws_random);
 }
 
 TEST(ParallelSafety, NewContextIsUnsafeOldContextIsSafe) {
@@ -93,7 +93,7 @@ TEST(ParallelSafety, CpfgStatementsAssignGlobals) {
   const lang::Model plain = parse_cpfg_text("Lsystem: 1\nderivation length: 2\naxiom: A(1)\nA(x) --> A(x+1)\nendlsystem\n");
   EXPECT_EQ(only_rule(plain).reason, "");
   const lang::Model counting =
-      parse_cpfg_text("Lsystem: 1\nderivation length: 2\naxiom: A(1)\nA(x) : {n=n+1} --> A(n)\nendlsystem\n");
+      parse_cpfg_text("Lsystem: 1\nderivation length: 2\naxiom: A(1)\nA(x) : {n=n+1;} --> A(n)\nendlsystem\n");
   EXPECT_EQ(only_rule(counting).reason.rfind("assigns `n`", 0), 0u) << only_rule(counting).reason;
 }
 
