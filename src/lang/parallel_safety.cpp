@@ -1,5 +1,7 @@
 #include "lang/parallel_safety.h"
 
+#include <cctype>
+
 #include <map>
 #include <optional>
 #include <set>
@@ -67,6 +69,33 @@ bool is_operand_end(const Token& t) {
 bool is_assignment(const Token& t) {
   static const Names ops = {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="};
   return t.kind == TokenKind::Punct && ops.count(t.text);
+}
+
+bool is_identifier(const std::string& text) {
+  if (text.empty() || std::isdigit(static_cast<unsigned char>(text[0]))) return false;
+  for (char c : text)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '$') return false;
+  return true;
+}
+
+// The tokens of `code` as the lexer splits them: the cpfg front end carries
+// the C++ it generates as one token.
+Code split_tokens(const Code& code) {
+  Code out;
+  for (const Token& t : code) {
+    if (t.kind != TokenKind::Identifier || is_identifier(t.text)) {
+      out.push_back(t);
+      continue;
+    }
+    TokenStream split = tokenize_preprocessed("# 1 \"lpfgall.h\" 1 3\n# 1 \"model\" 2\n" + t.text + "\n");
+    for (Token& u : split.tokens) {
+      if (u.kind == TokenKind::End) continue;
+      u.file = t.file;
+      u.line = t.line;
+      out.push_back(std::move(u));
+    }
+  }
+  return out;
 }
 
 // Index of the token matching the bracket at `open` (searching forward), or
@@ -152,7 +181,8 @@ class Analysis {
   using Pending = std::map<std::string, bool, std::less<>>;
   using Scopes = std::vector<Pending>;
 
-  void collect_definitions(const Code& code) {
+  void collect_definitions(const Code& written) {
+    const Code code = split_tokens(written);
     for (std::size_t k = 0; k + 1 < code.size(); ++k) {
       const Token& t = code[k];
       if ((t.is_ident("struct") || t.is_ident("class") || t.is_ident("union")) && code[k + 1].is_ident())
@@ -330,7 +360,8 @@ class Analysis {
 
   // Why the tokens of `code` are unsafe, or empty. `scopes` and `pending`
   // carry the body's variables from one part of a body to the next.
-  std::string code_reason(const Code& code, Scopes& scopes, Pending& pending) {
+  std::string code_reason(const Code& written, Scopes& scopes, Pending& pending) {
+    const Code code = split_tokens(written);
     auto where = [&](std::size_t k) { return code[k].line > 0 ? " (line " + std::to_string(code[k].line) + ")" : ""; };
     auto starts_expression = [](const Token& t) { return t.is_ident() && !kExpressionWords.count(t.text); };
     std::size_t declared_at = code.size();  // the name just declared, whose `=` initializes
@@ -383,6 +414,7 @@ class Analysis {
             return why + where(k);
         continue;
       }
+      if (t.kind == TokenKind::Verbatim) return "holds code the analysis does not read" + where(k);
       if (t.kind != TokenKind::Punct) continue;
       if (t.text == "{") {
         scopes.push_back(std::move(pending));

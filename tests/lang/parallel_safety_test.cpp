@@ -94,7 +94,10 @@ TEST(ParallelSafety, CpfgStatementsAssignGlobals) {
   EXPECT_EQ(only_rule(plain).reason, "");
   const lang::Model counting =
       parse_cpfg_text("Lsystem: 1\nderivation length: 2\naxiom: A(1)\nA(x) : {n=n+1;} --> A(n)\nendlsystem\n");
-  EXPECT_EQ(only_rule(counting).reason.rfind("assigns `n`", 0), 0u) << only_rule(counting).reason;
+  EXPECT_EQ(only_rule(counting).reason, "assigns `v_n`, which is not its own (line 4)");
+  // cpfg's ran() draws from the model's one stream.
+  const lang::Model drawing = parse_cpfg_text("Lsystem: 1\nderivation length: 2\naxiom: A(1)\nA(x) --> A(ran(x))\nendlsystem\n");
+  EXPECT_EQ(only_rule(drawing).reason.rfind("calls `::sylva::rt::cpfg::ran`", 0), 0u) << only_rule(drawing).reason;
 }
 
 }  // namespace
