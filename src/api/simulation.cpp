@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <thread>
 #include <cstdio>
 
 #include "api/environment_pass.h"
@@ -77,6 +78,10 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   control.request = &ModelRequestQueue::receive;
   derivation_ = std::make_unique<derive::Derivation>(library_->descriptor(),
                                                      [this](const std::string& text) { tell(text); });
+  derivation_->set_keyed_random(options.keyed_random);
+  derivation_->set_threads(options.threads > 0 ? options.threads
+                                               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+                            options.parallel_chunk_bytes);
   if (derivation_->types().cpfg()) {
     // A cpfg model's turtle symbols, looked up once for every interpretation;
     // its query symbols (?P ...) are module types of the model's own.
@@ -239,6 +244,7 @@ bool Simulation::fills_query_modules() const { return derivation_->uses_query_mo
 bool Simulation::stopped() const { return begun_ && derivation_->stop_requested(); }
 int Simulation::step_number() const { return begun_ ? derivation_->steps_done() : 0; }
 int Simulation::derivation_length() const { return derivation_->derivation_length(); }
+std::string Simulation::parallel_explanation() const { return derivation_->parallel_explanation(); }
 
 // ---- what the model asks for ------------------------------------------------------
 

@@ -73,6 +73,14 @@ struct SimulationOptions {
   // How many modules, how much string memory and how much time the run may
   // take (lstring/run_limits.h); past one the run stops with LimitExceeded.
   RunLimits limits = default_run_limits();
+  // Threads a derivation pass may use where the result cannot differ from a
+  // serial pass's (docs/parallel-derivation.md); 0: one per core.
+  int threads = 0;
+  // The least bytes of the old string a thread takes (derive::Derivation::set_threads).
+  std::size_t parallel_chunk_bytes = std::size_t{64} << 10;
+  // ran() in rule bodies keyed by the module rather than lpfg's sequence:
+  // the same string at any thread count, and such bodies run in parallel.
+  bool keyed_random = false;
 };
 
 // The size of images and drawings.
@@ -120,6 +128,8 @@ class Simulation {
   bool stopped() const;  // Stop() was called in this run
   int step_number() const;  // steps done since the axiom
   int derivation_length() const;
+  // Whether productions and decomposition run in parallel, or why not.
+  std::string parallel_explanation() const;
   // Seconds each step of this run took, environment and query passes included.
   const std::vector<double>& step_seconds() const { return step_seconds_; }
   // Every distinct warning told so far, in order.

@@ -85,6 +85,9 @@ struct RunOptions {
   sylva::EnvironmentOptions environment;
   bool cpfg_window_seeding = false;
   bool huge_pages = false;
+  int threads = 0;  // 0: one per core
+  bool explain_parallel = false;
+  bool keyed_random = false;
   sylva::RunLimits limits = sylva::default_run_limits();
 };
 
@@ -123,8 +126,11 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   sylva::SimulationOptions options{o.build, r.inputs};
   options.environment = r.environment;
   options.cpfg_window_seeding = r.cpfg_window_seeding;
+  options.threads = r.threads;
+  options.keyed_random = r.keyed_random;
   options.limits = r.limits;
   sylva::Simulation simulation(r.model, options);
+  if (r.explain_parallel) std::fputs(simulation.parallel_explanation().c_str(), stderr);
   std::optional<sylva::app::RunWatchdog> watchdog;
   if (r.limits.timeout_seconds > 0)
     watchdog.emplace(r.limits.timeout_seconds, [&simulation] { return simulation.budget().where(); });
@@ -209,6 +215,20 @@ int main(int argc, char** argv) {
       ->type_name("SECONDS");
   run->add_flag("--clean-ea20,--cleanEA20", r.environment.clean_ea20,
                 "Zero EA20's values before the environment's answers are written (lpfg's -cleanEA20)");
+  run->add_option("--threads", r.threads,
+                  "Threads a derivation step may use (default: one per core); the string is the same with any "
+                  "number, as steps run in parallel only where the result cannot differ (docs/parallel-derivation.md)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("N");
+  run->add_flag("--explain-parallel", r.explain_parallel,
+                "Say whether productions and decomposition run in parallel, or which rule keeps them serial and why");
+  run->add_option_function<std::string>(
+         "--random",
+         [&r](const std::string& mode) { r.keyed_random = mode == "keyed"; },
+         "ran() in rule bodies: 'lpfg' (default) draws lpfg's sequence; 'keyed' draws from a generator keyed by "
+         "the step and the module, so a stochastic model gives one string at any number of threads")
+      ->check(CLI::IsMember({"lpfg", "keyed"}))
+      ->type_name("MODE");
   run->add_flag("--cpfg-window-seeding", r.cpfg_window_seeding,
                 "cpfg models: choose among stochastic productions from seed: as cpfg's window does "
                 "(cpfg -g, and Sylva by default, ignore seed:)");

@@ -8,6 +8,7 @@
 
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
+#include "derive/keyed_random.h"
 #include "lstring/run_limits.h"
 #include "support/diagnostic.h"
 #include "support/model_faults.h"
@@ -221,6 +222,7 @@ void Derivation::apply_productions() {
   rewrites_.clear();
   {
     PassGuard guard(passes_running_);
+    KeyedRandomPass keyed(*this, RuleKind::Production);
     if (choice == GroupChoice::Undeclared) next_.assign(string_.data(), string_.size_bytes());
     else if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
     else if (c.forward) derive_forward();
@@ -247,12 +249,13 @@ void Derivation::end_each() {
 void Derivation::decompose() {
   if (!rules_.has_rules(RuleKind::Decomposition)) return;
   PassGuard guard(passes_running_);
+  KeyedRandomPass keyed(*this, RuleKind::Decomposition);
   depth_warnings_.clear();  // warned once per pass, as lpfg does
   next_.clear();
   rewrites_.clear();
   const int depth = maximum_depth(RuleKind::Decomposition);
   reset_lsystems();
-  expand(RuleKind::Decomposition, current_view(), 0, depth, next_);
+  if (!decompose_in_parallel(depth)) expand(RuleKind::Decomposition, current_view(), 0, depth, next_, expansion_);
   release_deep_expansion();
   std::swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
@@ -286,6 +289,7 @@ ModuleString Derivation::interpreted(int view) {
 
 void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
   PassGuard guard(passes_running_);
+  KeyedRandomPass keyed(*this, RuleKind::Interpretation);
   struct ViewGuard {
     int& view;
     ~ViewGuard() { view = 0; }
@@ -295,14 +299,14 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
   const bool has_rules = rules_.has_rules(RuleKind::Interpretation);
   const int depth = has_rules ? maximum_depth(RuleKind::Interpretation) : 1;
   if (has_rules) depth_warnings_.clear();
-  while (expansion_scratch_.empty()) expansion_scratch_.emplace_back();
+  while (expansion_.scratch.empty()) expansion_.scratch.emplace_back();
   reset_lsystems();
   std::uint32_t index = 0;
   std::size_t pos = src.begin;
   while (pos < src.end) {
     const ModuleId id = src.id_at(pos);
     if (has_rules && !rules_.forward(RuleKind::Interpretation, id).empty()) {
-      ModuleString& successor = expansion_scratch_[0];
+      ModuleString& successor = expansion_.scratch[0];
       successor.clear();
       std::size_t consumed = 0;
       if (depth < 1) {
@@ -310,7 +314,9 @@ void Derivation::interpret(int view, InterpretedModuleVisitor& visitor) {
           warn_depth_reached(RuleKind::Interpretation, id, depth);
       } else if (apply_forward(RuleKind::Interpretation, src, pos, successor, interpretation_out_, true, &consumed)) {
         interpretation_out_.clear();
-        expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_);
+        keyed_random::key.level = keyed_random::mix(0, pos);
+        expand(RuleKind::Interpretation, successor.view(types_), 1, depth, interpretation_out_, expansion_);
+        keyed_random::key.level = 0;
         const StringView shown = interpretation_out_.view(types_);
         for (std::size_t at = shown.begin; at < shown.end; at = shown.next(at))
           visitor.visit(shown.id_at(at), module_params(shown.data, at), index, false);
@@ -384,6 +390,7 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
     in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left);
   in_body.attach(call);
   if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
+  keyed_random::at_module(pos);
   model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   if (!call.produced) {
     out.truncate(mark);  // no produce: the rule did not apply, and nproduce'd modules go
@@ -419,6 +426,7 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
   InBodyContext in_body(src, skipped, left, right);
   in_body.set_new_right(new_string, new_right);
   in_body.attach(call);
+  keyed_random::at_module(end);
   model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   if (!call.produced) return false;
   *consumed = at;
@@ -444,24 +452,33 @@ bool Derivation::apply_forward(RuleKind kind, const StringView& src, std::size_t
 // ---- derivation steps --------------------------------------------------------
 
 void Derivation::derive_forward() {
+  if (derive_forward_in_parallel()) return;
   const StringView src = current_view();
   next_.clear();
   // Expect the string to grow as much as in the previous step, so it is
   // allocated once rather than copied on every doubling.
+  next_.reserve(affordable_reserve(string_.size_bytes()));
+  reset_lsystems();
+  forward_range(src, src.begin, src.end, next_);
+}
+
+std::size_t Derivation::affordable_reserve(std::size_t source_bytes) const {
   // Near the run's memory limit only what is affordable: the limit is
   // reached by what the step writes, not by what it might.
-  const auto expected = static_cast<std::size_t>(static_cast<double>(string_.size_bytes()) * growth_ * 1.05) + 256;
+  const auto expected = static_cast<std::size_t>(static_cast<double>(source_bytes) * growth_ * 1.05) + 256;
   const RunBudget* budget = RunBudget::active();
-  next_.reserve(budget ? budget->affordable(expected) : expected);
-  std::size_t pos = src.begin;
+  return budget ? budget->affordable(expected) : expected;
+}
+
+std::size_t Derivation::forward_range(const StringView& src, std::size_t from, std::size_t to, ModuleString& out) {
+  std::size_t pos = from;
   std::size_t run = pos;  // modules from `run` to `pos` are copied unchanged
   auto flush = [&] {
-    if (pos > run) next_.append(src.data + run, pos - run);
+    if (pos > run) out.append(src.data + run, pos - run);
   };
   const auto before_module = model_.before_module;
   const bool probe = before_module && (model_.flags & abi::kModelProbeProductions) != 0;
-  reset_lsystems();
-  while (pos < src.end) {
+  while (pos < to) {
     const ModuleId id = src.id_at(pos);
     const bool cut = id == rt::mid::Cut;
     // cpfg draws for every module of a stochastic L-system, a cut included.
@@ -484,17 +501,17 @@ void Derivation::derive_forward() {
       std::size_t consumed = 0;
       if (probe) {
         // The rules that apply tell the model their probabilities; nothing is produced.
-        apply_forward(RuleKind::Production, src, pos, probe_out_, next_, true, &consumed);
+        apply_forward(RuleKind::Production, src, pos, probe_out_, out, true, &consumed);
         probe_out_.clear();
         before_module(abi::kNoModule);
       }
-      const std::size_t output_before = next_.size_bytes();
-      if (apply_forward(RuleKind::Production, src, pos, next_, next_, true, &consumed)) {
-        note_rewrite(start, consumed, next_.size_bytes() - output_before);
+      const std::size_t output_before = out.size_bytes();
+      if (apply_forward(RuleKind::Production, src, pos, out, out, true, &consumed)) {
+        note_rewrite(start, consumed, out.size_bytes() - output_before);
         pos = consumed;
       } else {
         const std::size_t n = src.next(pos);
-        next_.append(src.data + pos, n - pos);
+        out.append(src.data + pos, n - pos);
         pos = n;
       }
     }
@@ -503,6 +520,7 @@ void Derivation::derive_forward() {
     run = pos;
   }
   flush();
+  return pos;
 }
 
 void Derivation::derive_backward() {
@@ -539,29 +557,32 @@ void Derivation::derive_backward() {
 
 // ---- decomposition and interpretation -----------------------------------------
 
-void Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out) {
+std::size_t Derivation::expand(RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out,
+                               Expansion& expansion, std::size_t stop, std::size_t from) {
   // An explicit stack of the levels being written out rather than recursion,
   // so that a depth of millions needs no machine stack. A level's
   // successors are built in the scratch string of its place on the stack,
   // which stays untouched while the levels below read their own.
-  std::vector<ExpansionFrame>& frames = expansion_frames_;
+  std::vector<ExpansionFrame>& frames = expansion.frames;
+  std::deque<ModuleString>& scratch = expansion.scratch;
   frames.clear();
   StringView src = source;
-  std::size_t pos = src.begin;
+  const std::size_t top_end = std::min(stop, source.end);
+  std::size_t pos = from == SIZE_MAX ? src.begin : from;
   std::size_t run = pos;
   auto flush = [&] {
     if (pos > run) out.append(src.data + run, pos - run);
   };
   // Where the current level builds a successor: the scratch string after its source's.
   auto scratch_below = [&] {
-    while (expansion_scratch_.size() <= frames.size() + 1) expansion_scratch_.emplace_back();
-    return &expansion_scratch_[frames.size() + 1];
+    while (scratch.size() <= frames.size() + 1) scratch.emplace_back();
+    return &scratch[frames.size() + 1];
   };
   ModuleString* successor = scratch_below();
   // The L-system stack follows the string as it is written out: modules
   // kept as they are here, successors one level down.
   for (;;) {
-    if (pos >= src.end) {
+    if (pos >= (frames.empty() ? top_end : src.end)) {
       flush();
       if (frames.empty()) break;
       // Back to the level above, past the predecessor just expanded.
@@ -569,6 +590,7 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
       frames.pop_back();
       src = up.source;
       depth = up.depth;
+      keyed_random::key.level = up.random_level;
       if (depth == 0 && kind == RuleKind::Decomposition)
         note_rewrite(up.pos, up.resume, out.size_bytes() - up.output_before);
       pos = run = up.resume;
@@ -584,7 +606,10 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
     flush();
     std::size_t consumed = 0;
     if (depth >= max_depth) {
-      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) warn_depth_reached(kind, id, max_depth);
+      if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) {
+        if (expansion.defer_warnings) expansion.depth_reached.push_back(id);
+        else warn_depth_reached(kind, id, max_depth);
+      }
     } else {
       successor->clear();
       if (apply_forward(kind, src, pos, *successor, out, true, &consumed)) {
@@ -592,12 +617,13 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
           // The level ends with this successor: it is replaced rather than
           // kept waiting, so a chain of last modules (A --> B A) takes no
           // more memory however deep it goes.
-          std::swap(expansion_scratch_[frames.size()], *successor);
+          std::swap(scratch[frames.size()], *successor);
         } else {
-          frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth});
+          frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth, keyed_random::key.level});
         }
+        keyed_random::key.level = keyed_random::mix(keyed_random::key.level, pos);
         ++depth;
-        src = expansion_scratch_[frames.size()].view(types_);
+        src = scratch[frames.size()].view(types_);
         pos = run = src.begin;
         successor = scratch_below();
         continue;
@@ -608,13 +634,14 @@ void Derivation::expand(RuleKind kind, const StringView& source, int depth, int 
     out.append(src.data + pos, n - pos);
     pos = run = n;
   }
+  return pos;
 }
 
 void Derivation::release_deep_expansion() {
   // A pass that went very deep leaves no lasting memory behind.
   constexpr std::size_t kKept = 64;
-  if (expansion_scratch_.size() > kKept) expansion_scratch_.resize(kKept);
-  if (expansion_frames_.capacity() > kKept) std::vector<ExpansionFrame>().swap(expansion_frames_);
+  if (expansion_.scratch.size() > kKept) expansion_.scratch.resize(kKept);
+  if (expansion_.frames.capacity() > kKept) std::vector<ExpansionFrame>().swap(expansion_.frames);
 }
 
 int Derivation::maximum_depth(RuleKind kind) const {

@@ -4,6 +4,7 @@
 // the axiom and every step, and interpretation rules on demand.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <optional>
@@ -117,6 +118,22 @@ class Derivation {
   void track_births(bool on) { tracking_births_ = on; }
   const std::vector<std::uint32_t>& births() const { return births_; }
 
+  // ---- parallel passes (parallel_derivation.cpp)
+  // Passes run on up to `threads` threads wherever the result cannot differ
+  // from a serial pass's; 1: every pass is serial. A thread takes at least
+  // `min_chunk_bytes` of the old string: smaller chunks cost more in threads
+  // and joins than they save (tests split small strings with smaller ones).
+  static constexpr std::size_t kMinChunkBytes = std::size_t{64} << 10;
+  void set_threads(int threads, std::size_t min_chunk_bytes = kMinChunkBytes);
+  // ran() in rule bodies draws from a generator keyed by the pass's seed,
+  // the module's place in the old string and the draw (derive/keyed_random.h),
+  // not from lpfg's sequence: the same string at any thread count, and
+  // bodies that call ran() may run in parallel.
+  void set_keyed_random(bool on);
+  // For each kind of pass, whether it runs in parallel or why it is serial
+  // (the rule, its file and line, what its body does); one line each.
+  std::string parallel_explanation() const;
+
  private:
   // A stretch of the old string [source_begin, source_end) replaced by
   // `output_bytes` bytes of the new one, in the order of the old string.
@@ -146,6 +163,33 @@ class Derivation {
   // The current string as context matching sees it (a ring if the model says so).
   StringView current_view() const;
 
+  // Why passes of `kind` run serially whatever the string, or empty.
+  std::string serial_reason(abi::RuleKind kind) const;
+  // Where the chunks of a parallel pass over `src` start; none when the
+  // string is too short to split.
+  std::vector<std::size_t> chunk_starts(const StringView& src) const;
+  // A forward step, or decomposition, on several threads into next_; false
+  // (nothing done) where it must be serial.
+  bool derive_forward_in_parallel();
+  bool decompose_in_parallel(int max_depth);
+  // The chunks of `src` starting at `starts`, each passed through `range`
+  // (from, to, out; returns where it stopped), joined into next_.
+  using RangePass = std::function<std::size_t(std::size_t chunk, std::size_t from, std::size_t to, ModuleString& out)>;
+  void run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, const RangePass& range);
+  // Productions applied to the modules of `src` from `from` until the first
+  // one at or past `to`, appended to `out`; returns where it stopped (past
+  // `to` when a predecessor of several modules or a cut spans it).
+  std::size_t forward_range(const StringView& src, std::size_t from, std::size_t to, ModuleString& out);
+  // The bytes to set aside for the successor of `source_bytes` bytes.
+  std::size_t affordable_reserve(std::size_t source_bytes) const;
+  // ran()'s keyed generator installed for the life of a pass, in the keyed mode.
+  struct KeyedRandomPass {
+    abi::ControlState& control;
+    KeyedRandomPass(Derivation& derivation, abi::RuleKind kind);
+    ~KeyedRandomPass();
+  };
+  static double keyed_draw(void* host);
+
   // Decomposition of string_ in place (through next_).
   void decompose();
   // One pass of productions over string_ into next_.
@@ -153,9 +197,6 @@ class Derivation {
   void derive_backward();
   // One step of a Gillespie group (gillespie_step.cpp): one reaction fires.
   void derive_gillespie();
-  // Decomposition or interpretation: rules applied to each module and again
-  // to its successors, up to max_depth levels, without recursion.
-  void expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out);
   // A level of expand() waiting for the successor it expanded to be written.
   struct ExpansionFrame {
     StringView source;
@@ -163,7 +204,23 @@ class Derivation {
     std::size_t resume;         // past it
     std::size_t output_before;  // the output's size when its successor began
     int depth;
+    std::uint64_t random_level;  // keyed_random::Key::level of `source`
   };
+  // What expand() works in: one per thread expanding.
+  struct Expansion {
+    std::deque<ModuleString> scratch;  // one per level of the stack
+    std::vector<ExpansionFrame> frames;
+    // Modules that reached the maximum depth, in the order met, when their
+    // warnings are given later (a chunk of a parallel pass); else given at once.
+    bool defer_warnings = false;
+    std::vector<ModuleId> depth_reached;
+  };
+  // Decomposition or interpretation: rules applied to each module and again
+  // to its successors, up to max_depth levels, without recursion. Expands
+  // the modules of `source` from `from` (its start by default) until the
+  // first at or past `stop` (its end by default); returns where it stopped.
+  std::size_t expand(abi::RuleKind kind, const StringView& source, int depth, int max_depth, ModuleString& out,
+                     Expansion& expansion, std::size_t stop = SIZE_MAX, std::size_t from = SIZE_MAX);
   void release_deep_expansion();
 
   // Tries the rules for the module at `pos`; on success returns true with
@@ -195,8 +252,7 @@ class Derivation {
   ModuleString successor_;  // backward derivation builds each successor here
   ModuleString probe_out_;  // the probing pass's output (kModelProbeProductions): stays empty
   PrependBuffer backward_out_;
-  std::deque<ModuleString> expansion_scratch_;  // one per level of expand()'s stack
-  std::vector<ExpansionFrame> expansion_frames_;
+  Expansion expansion_;  // of the serial passes
   std::set<std::pair<int, ModuleId>> depth_warnings_;
   int steps_done_ = 0;
   bool ring_ = false;
@@ -214,6 +270,12 @@ class Derivation {
   std::set<int> warned_groups_;                 // UseGroup numbers already warned about
   ReactionSet* gathering_reactions_ = nullptr;  // set while a Gillespie step runs bodies
   ModuleString reaction_scratch_;               // where those bodies write
+  int threads_ = 1;
+  std::size_t min_chunk_bytes_ = kMinChunkBytes;
+  bool forward_parallel_ = false;        // no production's body keeps productions serial
+  bool decomposition_parallel_ = false;  // nor a decomposition rule's decomposition
+  bool keyed_random_ = false;
+  std::uint64_t keyed_seed_ = 0;  // of the pass running, in the keyed mode
   static constexpr double kMaxGrowthReserved = 8;
   double growth_ = 1.5;  // bytes after / before the last step, at most kMaxGrowthReserved
 };

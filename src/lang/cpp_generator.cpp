@@ -6,6 +6,7 @@
 
 #include "lang/constant_modules.h"
 #include "lang/mapped_writer.h"
+#include "lang/parallel_safety.h"
 
 namespace sylva::lang {
 namespace {
@@ -344,6 +345,14 @@ class CppGenerator {
            std::to_string(rule.at.line) + ", " + std::to_string(rule.view) + "},\n";
     }
     t += "  {}\n};\n";
+    // Which bodies a parallel derivation pass may run at once, and why not the others.
+    const std::vector<RuleSafety> safety = rule_safety(model_);
+    t += "const ::std::uint8_t sylva_rule_parallel[] = {";
+    for (const RuleSafety& s : safety)
+      t += s.reason.empty() ? (s.draws_random ? "2," : "1,") : "0,";
+    t += "0};\nconst char* const sylva_rule_serial_reasons[] = {";
+    for (const RuleSafety& s : safety) t += (s.reason.empty() ? std::string("nullptr") : quoted(s.reason)) + ",";
+    t += "nullptr};\n";
     auto int_array = [&t](const char* name, const std::vector<int>& values) {
       if (values.empty()) return;
       t += std::string("const int ") + name + "[] = {";
@@ -411,6 +420,7 @@ class CppGenerator {
          std::to_string(model_.gillespie_groups.size()) + ",\n";
     t += "    " + std::string(model_.groups.empty() ? "nullptr" : "sylva_groups") + ", " +
          std::to_string(model_.groups.size()) + ",\n";
+    t += "    sylva_rule_parallel, sylva_rule_serial_reasons,\n";
     t += "  };\n";
     t += "  return &descriptor;\n}\n";
     out_.block(t);

@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 11;
+inline constexpr std::uint32_t kAbiVersion = 12;
 
 using ModuleId = std::uint16_t;
 
@@ -199,6 +199,11 @@ struct ControlState {
   // cpfg's window seeds drand48 (seed48({seed, 0, 155})); false: as cpfg's
   // batch runs (-g), which never seed it (state 0).
   bool cpfg_window_seeding = false;
+  // Set by the engine in the keyed random mode: ran() draws from here, a
+  // generator keyed by the step's seed, the step, the module's place in the
+  // old string and the draw, rather than from rand48; so a stochastic model
+  // derives the same string whichever bodies run first. Null: rand48.
+  double (*keyed_random)(void* host) = nullptr;
 };
 
 // The state lpfg gives both of its generators when it loads a model (erand48
@@ -301,6 +306,18 @@ struct ModelDescriptor {
   // always exists), which UseGroup may select.
   const int* groups;
   std::uint32_t group_count;
+  // Per rule (rule_count of each), from the translator's analysis of its
+  // body: whether it may run at the same time as other bodies of its pass
+  // (a RuleParallel), and if not, why ("assigns `n`, which is not its own").
+  const std::uint8_t* rule_parallel;
+  const char* const* rule_serial_reasons;  // null where the rule is parallel
+};
+
+// ModelDescriptor::rule_parallel
+enum RuleParallel : std::uint8_t {
+  kRuleSerial = 0,
+  kRuleParallel = 1,
+  kRuleParallelIfKeyed = 2,  // it calls ran(): parallel where ran() is keyed (ControlState::keyed_random)
 };
 
 inline constexpr ModuleId kNoModule = 0xFFFF;

@@ -92,7 +92,10 @@ inline std::uint64_t lpfg_random_state(long seed) { return static_cast<std::uint
 }  // namespace sylva::rt
 
 // A number in [0, range): lpfg computes it in double, whatever it is stored in.
-inline double ran(double range) { return sylva::rt::next_rand48() * range; }
+inline double ran(double range) {
+  const sylva::abi::ControlState& c = sylva::rt::control;
+  return (c.keyed_random ? c.keyed_random(c.host) : sylva::rt::next_rand48()) * range;
+}
 inline void sran(long seed) { sylva::rt::control.rand48 = sylva::rt::lpfg_random_state(seed); }
 
 // ---- Gillespie groups (6.1.2, 7.2): their own generator, apart from ran().

@@ -1,0 +1,196 @@
+// Derivation passes on several threads, where the result cannot differ from
+// a serial pass's: the old string is cut into chunks at module boundaries,
+// each chunk is rewritten on its own (reading the whole old string for
+// context) and the successors are joined in order. A pass is serial when
+// one of its bodies may act beyond its successor (the translator's analysis,
+// abi::ModelDescriptor::rule_parallel), reads the string being built (new
+// context, backward steps), draws from one random sequence (ran() outside
+// the keyed mode, cpfg's stochastic productions), or keeps state from
+// module to module (cpfg's sub-L-systems, Gillespie steps, birth tracking).
+#include <algorithm>
+#include <cstring>
+#include <exception>
+
+#include "derive/derivation.h"
+#include "derive/keyed_random.h"
+#include "derive/worker_threads.h"
+#include "lstring/run_limits.h"
+
+namespace sylva::derive {
+namespace {
+
+// Chunks per thread: rewriting some parts of a string costs more than others.
+constexpr std::size_t kChunksPerThread = 4;
+
+const char* kind_name(abi::RuleKind kind) {
+  return kind == abi::RuleKind::Production ? "production" : "decomposition rule";
+}
+
+}  // namespace
+
+std::string Derivation::serial_reason(abi::RuleKind kind) const {
+  if (sub_lsystems_) return "the model has sub-L-systems, whose stack is followed module by module";
+  if (kind == abi::RuleKind::Production && model_.before_module)
+    return "the model's stochastic productions draw for every module in turn";
+  if (kind == abi::RuleKind::Production && model_.gillespie_group_count > 0)
+    return "the model has Gillespie groups";
+  for (std::uint32_t r = 0; r < model_.rule_count; ++r) {
+    const abi::Rule& rule = model_.rules[r];
+    if (rule.kind != kind) continue;
+    const std::string at = std::string(rule.file ? rule.file : "?") + ":" + std::to_string(rule.line) + ": " +
+                           kind_name(kind) + " ";
+    if (rule.part_length[abi::kNewLeft] > 0 || rule.part_length[abi::kNewRight] > 0)
+      return at + "reads the new string as context";
+    const std::uint8_t verdict = model_.rule_parallel ? model_.rule_parallel[r] : std::uint8_t{abi::kRuleSerial};
+    if (verdict == abi::kRuleParallelIfKeyed && !keyed_random_)
+      return at + "calls ran() (--random keyed lets it run in parallel)";
+    if (verdict == abi::kRuleSerial) {
+      const char* why = model_.rule_serial_reasons ? model_.rule_serial_reasons[r] : nullptr;
+      return at + (why ? why : "was not analysed");
+    }
+  }
+  return "";
+}
+
+std::string Derivation::parallel_explanation() const {
+  if (threads_ < 2) return "derivation: serial (one thread)\n";
+  std::string text;
+  for (abi::RuleKind kind : {abi::RuleKind::Production, abi::RuleKind::Decomposition}) {
+    if (!rules_.has_rules(kind)) continue;
+    const std::string why = serial_reason(kind);
+    text += std::string(kind == abi::RuleKind::Production ? "productions" : "decomposition") + ": " +
+            (why.empty() ? "parallel on " + std::to_string(threads_) + " threads for strings of " +
+                               std::to_string(2 * min_chunk_bytes_ >> 10) + " KiB or more" +
+                               (kind == abi::RuleKind::Production ? " (forward steps, " : " (") + "births not tracked)"
+                         : "serial: " + why) +
+            "\n";
+  }
+  return text.empty() ? "derivation: no productions or decomposition rules\n" : text;
+}
+
+void Derivation::set_threads(int threads, std::size_t min_chunk_bytes) {
+  threads_ = std::max(threads, 1);
+  min_chunk_bytes_ = std::max<std::size_t>(min_chunk_bytes, 1);
+  forward_parallel_ = serial_reason(abi::RuleKind::Production).empty();
+  decomposition_parallel_ = serial_reason(abi::RuleKind::Decomposition).empty();
+}
+
+void Derivation::set_keyed_random(bool on) {
+  keyed_random_ = on;
+  set_threads(threads_, min_chunk_bytes_);
+}
+
+double Derivation::keyed_draw(void* host) {
+  return keyed_random::draw(static_cast<Derivation*>(host)->keyed_seed_);
+}
+
+Derivation::KeyedRandomPass::KeyedRandomPass(Derivation& d, abi::RuleKind kind) : control(d.control()) {
+  if (!d.keyed_random_) return;
+  // The pass's seed: what the control statements left in ran()'s generator
+  // (bodies do not advance it in this mode), the step and the kind of pass.
+  d.keyed_seed_ = keyed_random::mix(keyed_random::mix(control.rand48, static_cast<std::uint64_t>(control.step)),
+                                    static_cast<std::uint64_t>(kind));
+  keyed_random::key = {};
+  control.keyed_random = &Derivation::keyed_draw;
+}
+
+Derivation::KeyedRandomPass::~KeyedRandomPass() { control.keyed_random = nullptr; }
+
+std::vector<std::size_t> Derivation::chunk_starts(const StringView& src) const {
+  const std::size_t bytes = src.end - src.begin;
+  if (threads_ < 2 || bytes < 2 * min_chunk_bytes_) return {};
+  const std::size_t chunks =
+      std::min(bytes / min_chunk_bytes_, static_cast<std::size_t>(threads_) * kChunksPerThread);
+  std::vector<std::size_t> starts{src.begin};
+  std::size_t pos = src.begin;
+  for (std::size_t c = 1; c < chunks; ++c) {
+    const std::size_t target = src.begin + bytes / chunks * c;
+    while (pos < target) pos = src.next(pos);
+    if (pos >= src.end) break;
+    starts.push_back(pos);
+  }
+  return starts;
+}
+
+bool Derivation::derive_forward_in_parallel() {
+  if (!forward_parallel_ || tracking_births_) return false;
+  const StringView src = current_view();
+  const std::vector<std::size_t> starts = chunk_starts(src);
+  if (starts.size() < 2) return false;
+  run_in_chunks(src, starts, [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
+    out.reserve(affordable_reserve(to - std::min(from, to)));
+    return forward_range(src, from, to, out);
+  });
+  return true;
+}
+
+bool Derivation::decompose_in_parallel(int max_depth) {
+  if (!decomposition_parallel_ || tracking_births_) return false;
+  const StringView src = current_view();
+  const std::vector<std::size_t> starts = chunk_starts(src);
+  if (starts.size() < 2) return false;
+  std::vector<Expansion> expansions(starts.size());
+  run_in_chunks(src, starts, [&](std::size_t c, std::size_t from, std::size_t to, ModuleString& out) {
+    Expansion& expansion = expansions[c];
+    expansion.defer_warnings = true;
+    expansion.depth_reached.clear();
+    keyed_random::key = {};
+    return expand(abi::RuleKind::Decomposition, src, 0, max_depth, out, expansion, to, from);
+  });
+  // The warnings of the chunks, in the order a serial pass meets them.
+  for (const Expansion& expansion : expansions)
+    for (ModuleId id : expansion.depth_reached) warn_depth_reached(abi::RuleKind::Decomposition, id, max_depth);
+  return true;
+}
+
+void Derivation::run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, const RangePass& range) {
+  const std::size_t n = starts.size();
+  auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
+  struct Chunk {
+    ModuleString out;
+    std::size_t reached = 0;  // where its pass stopped: at or past the next chunk's start
+    std::exception_ptr failure;
+  };
+  std::vector<Chunk> chunks(n);
+  auto rewrite = [&](std::size_t c, std::size_t from) {
+    Chunk& chunk = chunks[c];
+    chunk.out.clear();
+    chunk.failure = nullptr;
+    try {
+      chunk.reached = range(c, from, end_of(c), chunk.out);
+    } catch (...) {
+      chunk.failure = std::current_exception();
+    }
+  };
+  run_tasks(threads_, n, [&](std::size_t c) { rewrite(c, starts[c]); });
+  // A chunk whose first modules the one before rewrote (a predecessor of
+  // several modules, or a cut, across the boundary) is rewritten again from
+  // where that one stopped, as a serial pass would go on. A failure is the
+  // serial pass's only where that pass would have got to it.
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (c > 0 && chunks[c - 1].reached != starts[c]) {
+      if (chunks[c - 1].reached >= end_of(c)) {
+        chunks[c].out.clear();
+        chunks[c].failure = nullptr;
+        chunks[c].reached = chunks[c - 1].reached;
+      } else {
+        rewrite(c, chunks[c - 1].reached);
+      }
+    }
+    if (chunks[c].failure) std::rethrow_exception(chunks[c].failure);
+    total += chunks[c].out.size_bytes();
+  }
+  next_.clear();
+  next_.reserve(total);
+  std::vector<std::size_t> offsets(n, 0);
+  for (std::size_t c = 1; c < n; ++c) offsets[c] = offsets[c - 1] + chunks[c - 1].out.size_bytes();
+  unsigned char* data = next_.buffer()->data;
+  run_tasks(threads_, n, [&](std::size_t c) {
+    if (!chunks[c].out.empty()) std::memcpy(data + offsets[c], chunks[c].out.data(), chunks[c].out.size_bytes());
+    chunks[c].out = ModuleString();
+  });
+  next_.buffer()->size = total;
+}
+
+}  // namespace sylva::derive

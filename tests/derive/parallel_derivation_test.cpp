@@ -1,0 +1,145 @@
+// Parallel derivation gives the serial string: every model of examples/ and
+// of the golden sets derived on one thread and on four, the string cut into
+// chunks of a few modules so that even these small strings are split (across
+// predecessors of several modules, cuts and branches), compared byte for
+// byte; and the keyed random mode gives one string at any thread count.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "api/simulation.h"
+#include "io/string_text.h"
+#include "support/diagnostic.h"
+#include "test_support.h"
+
+namespace sylva::test {
+namespace {
+namespace fs = std::filesystem;
+
+// Steps enough to grow each string well past a few chunks, few enough to
+// keep the models whose strings grow fast quick.
+constexpr int kMaxSteps = 12;
+
+struct Derived {
+  std::string string;  // the final string, or the error that ended the run
+  std::string explanation;
+};
+
+Derived derive(const std::string& model, int threads, bool keyed = false, int steps = -1) {
+  SimulationOptions options;
+  options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+  options.threads = threads;
+  options.keyed_random = keyed;
+  options.parallel_chunk_bytes = 48;
+  Derived run;
+  try {
+    Simulation simulation(model, options, [](const std::string&) {});
+    run.explanation = simulation.parallel_explanation();
+    if (steps < 0) steps = std::min(simulation.derivation_length(), kMaxSteps);
+    simulation.run(steps);
+    run.string = io::format_string(simulation.string(), simulation.types());
+  } catch (const std::exception& e) {
+    run.string = std::string("error: ") + e.what();
+  }
+  return run;
+}
+
+std::vector<std::string> all_models() {
+  std::vector<std::string> models;
+  for (const auto& entry : fs::directory_iterator(example_path("")))
+    if (entry.is_directory())
+      for (const auto& file : fs::directory_iterator(entry.path()))
+        if (file.path().extension() == ".l") models.push_back(file.path().string());
+  for (const char* set : {"golden", "golden-cpfg"})
+    for (const fs::path& folder : model_folders(data_path(set))) models.push_back((folder / "lsystem.l").string());
+  std::sort(models.begin(), models.end());
+  return models;
+}
+
+class EveryModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryModel, GivesTheSerialStringOnFourThreads) {
+  const Derived one = derive(GetParam(), 1), four = derive(GetParam(), 4);
+  EXPECT_EQ(one.string, four.string);
+}
+
+INSTANTIATE_TEST_SUITE_P(ParallelDerivation, EveryModel, ::testing::ValuesIn(all_models()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = fs::path(info.param).parent_path().filename().string() + "_" +
+                                              fs::path(info.param).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name + "_" + std::to_string(info.index);
+                         });
+
+// Not a vacuous comparison: the models above that run in parallel.
+TEST(ParallelDerivation, ManyModelsRunInParallel) {
+  int parallel = 0;
+  for (const char* name : {"koch/koch.l", "branching/branching.l", "context-developmental/context-developmental.l",
+                           "decomposition/decomposition.l", "snowflake/snowflake.l"})
+    if (derive(example_path(name), 4, false, 0).explanation.find("productions: parallel") != std::string::npos)
+      ++parallel;
+  EXPECT_GE(parallel, 3);
+}
+
+TEST(ParallelDerivation, ExplainsWhichRuleKeepsARunSerial) {
+  const std::string model = write_temp_file("parallel-explain", "counter.l",
+                                            "#include <lpfgall.h>\n"
+                                            "int count = 0;\n"
+                                            "derivation length: 3;\n"
+                                            "module A;\n"
+                                            "axiom: A;\n"
+                                            "A :\n"
+                                            "{\n"
+                                            "  count = count + 1;\n"
+                                            "  produce A A;\n"
+                                            "}\n");
+  const Derived run = derive(model, 4);
+  EXPECT_NE(run.explanation.find("productions: serial: "), std::string::npos) << run.explanation;
+  EXPECT_NE(run.explanation.find("counter.l:6: production assigns `count`"), std::string::npos) << run.explanation;
+  EXPECT_EQ(run.string, "A A A A A A A A\n");
+  EXPECT_EQ(derive(example_path("koch/koch.l"), 4).explanation.rfind("productions: parallel on 4 threads", 0), 0u);
+}
+
+// A stochastic model: what each module becomes depends on ran().
+const char* const kStochastic =
+    "#include <lpfgall.h>\n"
+    "derivation length: 9;\n"
+    "module A(float);\n"
+    "module B(float);\n"
+    "axiom: A(0) B(1) A(2);\n"
+    "A(x) :\n"
+    "{\n"
+    "  if (ran(1) < 0.5) produce A(x + ran(1)) B(x);\n"
+    "  produce A(x) SB() A(ran(2)) EB();\n"
+    "}\n"
+    "B(x) < A(y) :\n"
+    "{\n"
+    "  produce A(x * y) B(ran(1));\n"
+    "}\n"
+    "decomposition:\n"
+    "B(x) :\n"
+    "{\n"
+    "  if (ran(1) < 0.3) produce B(x) B(ran(1));\n"
+    "  produce B(x);\n"
+    "}\n";
+
+TEST(ParallelDerivation, KeyedRandomGivesOneStringAtAnyThreadCount) {
+  const std::string model = write_temp_file("parallel-keyed", "stochastic.l", kStochastic);
+  const Derived one = derive(model, 1, true), two = derive(model, 2, true), four = derive(model, 4, true);
+  EXPECT_EQ(four.explanation.find("serial"), std::string::npos) << four.explanation;
+  EXPECT_GT(one.string.size(), 1000u);
+  EXPECT_EQ(one.string, two.string);
+  EXPECT_EQ(one.string, four.string);
+  // lpfg's sequence keeps productions that draw serial, and its own string.
+  const Derived lpfg = derive(model, 4, false);
+  EXPECT_NE(lpfg.explanation.find("calls ran()"), std::string::npos) << lpfg.explanation;
+  EXPECT_EQ(lpfg.string, derive(model, 1, false).string);
+  EXPECT_NE(lpfg.string, one.string);
+}
+
+}  // namespace
+}  // namespace sylva::test
