@@ -272,6 +272,9 @@ class Derivation {
   ModuleString reaction_scratch_;               // where those bodies write
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
+  // Each chunk's successors in a parallel pass, kept from pass to pass so
+  // that their pages are faulted in once, not at every step.
+  std::vector<ModuleString> chunk_out_;
   bool forward_parallel_ = false;        // no production's body keeps productions serial
   bool decomposition_parallel_ = false;  // nor a decomposition rule's decomposition
   bool keyed_random_ = false;

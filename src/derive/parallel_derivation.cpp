@@ -147,11 +147,14 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   const std::size_t n = starts.size();
   auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
   struct Chunk {
-    ModuleString out;
+    ModuleString& out;
     std::size_t reached = 0;  // where its pass stopped: at or past the next chunk's start
     std::exception_ptr failure;
   };
-  std::vector<Chunk> chunks(n);
+  if (chunk_out_.size() < n) chunk_out_.resize(n);
+  std::vector<Chunk> chunks;
+  chunks.reserve(n);
+  for (std::size_t c = 0; c < n; ++c) chunks.push_back(Chunk{chunk_out_[c]});
   auto rewrite = [&](std::size_t c, std::size_t from) {
     Chunk& chunk = chunks[c];
     chunk.out.clear();
@@ -188,7 +191,6 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   unsigned char* data = next_.buffer()->data;
   run_tasks(threads_, n, [&](std::size_t c) {
     if (!chunks[c].out.empty()) std::memcpy(data + offsets[c], chunks[c].out.data(), chunks[c].out.size_bytes());
-    chunks[c].out = ModuleString();
   });
   next_.buffer()->size = total;
 }
