@@ -207,7 +207,7 @@ class Derivation {
     std::uint64_t random_level;  // keyed_random::Key::level of `source`
   };
   // What expand() works in: one per thread expanding.
-  struct Expansion {
+  struct alignas(64) Expansion {  // a cache line of its own: one per thread
     std::deque<ModuleString> scratch;  // one per level of the stack
     std::vector<ExpansionFrame> frames;
     // Modules that reached the maximum depth, in the order met, when their
@@ -273,8 +273,13 @@ class Derivation {
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
   // Each chunk's successors in a parallel pass, kept from pass to pass so
-  // that their pages are faulted in once, not at every step.
-  std::vector<ModuleString> chunk_out_;
+  // that their pages are faulted in once, not at every step. A cache line
+  // each: threads appending to neighbouring buffers would otherwise write
+  // the same line at every module.
+  struct alignas(64) ChunkOutput {
+    ModuleString string;
+  };
+  std::vector<ChunkOutput> chunk_out_;
   bool forward_parallel_ = false;        // no production's body keeps productions serial
   bool decomposition_parallel_ = false;  // nor a decomposition rule's decomposition
   bool keyed_random_ = false;

@@ -154,7 +154,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   if (chunk_out_.size() < n) chunk_out_.resize(n);
   std::vector<Chunk> chunks;
   chunks.reserve(n);
-  for (std::size_t c = 0; c < n; ++c) chunks.push_back(Chunk{chunk_out_[c]});
+  for (std::size_t c = 0; c < n; ++c) chunks.push_back(Chunk{chunk_out_[c].string});
   auto rewrite = [&](std::size_t c, std::size_t from) {
     Chunk& chunk = chunks[c];
     chunk.out.clear();

@@ -4,7 +4,7 @@
 // Every folder tests/golden/<name>/ holds lsystem.l and expected-stepN.txt, the
 // string lpfg printed after N steps. One test case per (folder, N), found by
 // scanning tests/golden when the test program starts. The engine must match
-// lpfg exactly: module names, structure and every number as printed.
+// lpfg exactly: module names, structure and the value of every number.
 //
 // Files other than lsystem.l, README.md and expected-* in a folder are inputs
 // the model reads from its working directory (notes-circuit-solver reads
@@ -12,10 +12,16 @@
 // itself writes there (thesis-L30-control-statements writes output.dat). Such
 // models run through the sylva program in a temporary copy of the folder;
 // the others are derived in-process, which is faster.
+//
+// The reference strings print a float with %.9g and a double with %.17g;
+// Sylva prints each in its shortest exact form. Numbers are therefore
+// compared as the values they read back to (same_text below), everything
+// else character by character.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -100,6 +106,38 @@ std::vector<std::string> split_modules(const std::string& s) {
   return modules;
 }
 
+bool starts_number(const char* at) {
+  if (*at == '-' || *at == '+') ++at;
+  if (*at == '.') ++at;
+  return std::isdigit(static_cast<unsigned char>(*at)) != 0;
+}
+
+// The same string, a number in the reference text (%.9g of a float, %.17g
+// of a double) matching one in Sylva's (shortest exact text) when both read
+// back to the same double, or, for a reference number of at most 9
+// significant digits (a float's), to the same float.
+bool same_text(const std::string& expected, const std::string& actual) {
+  const char *e = expected.c_str(), *a = actual.c_str();
+  const char *e_end = e + expected.size(), *a_end = a + actual.size();
+  while (e < e_end && a < a_end) {
+    const bool in_name = e > expected.c_str() && (std::isalnum(static_cast<unsigned char>(e[-1])) || e[-1] == '_');
+    if (!in_name && starts_number(e) && starts_number(a)) {
+      char *e_stop = nullptr, *a_stop = nullptr;
+      const double ed = std::strtod(e, &e_stop), ad = std::strtod(a, &a_stop);
+      int digits = 0;  // significant: from the first nonzero one
+      for (const char* c = e; c < e_stop && *c != 'e' && *c != 'E'; ++c)
+        if (std::isdigit(static_cast<unsigned char>(*c)) && (digits > 0 || *c != '0')) ++digits;
+      const bool same = ed == ad || (digits <= 9 && std::strtof(e, nullptr) == std::strtof(a, nullptr));
+      if (!same) return false;
+      e = e_stop;
+      a = a_stop;
+      continue;
+    }
+    if (*e++ != *a++) return false;
+  }
+  return e == e_end && a == a_end;
+}
+
 // Where two strings first differ, module by module, for the failure message
 // (the strings themselves can be hundreds of kilobytes).
 std::string describe_difference(const std::string& expected, const std::string& actual) {
@@ -108,7 +146,7 @@ std::string describe_difference(const std::string& expected, const std::string& 
   out << "expected " << e.size() << " modules (" << expected.size() << " bytes), got " << a.size() << " modules ("
       << actual.size() << " bytes)\n";
   std::size_t i = 0;
-  while (i < e.size() && i < a.size() && e[i] == a[i]) ++i;
+  while (i < e.size() && i < a.size() && same_text(e[i], a[i])) ++i;
   if (i == e.size() && i == a.size()) {
     out << "same modules, different separators";
     return out.str();
@@ -160,7 +198,7 @@ TEST_P(Golden, MatchesLpfg) {
     std::error_code ec;
     fs::remove_all(dir, ec);
   }
-  EXPECT_TRUE(actual == expected) << c.folder << " after " << c.steps << " steps:\n"
+  EXPECT_TRUE(same_text(expected, actual)) << c.folder << " after " << c.steps << " steps:\n"
                                   << describe_difference(expected, actual);
 }
 
