@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "lstring/param_text.h"
+#include "lstring/param_values.h"
 
 namespace sylva {
 
@@ -63,37 +64,17 @@ std::span<const abi::ParamField> ModuleTypes::params(ModuleId id) const {
 
 namespace {
 
-template <class T>
-T load(const unsigned char* at) {
-  T value;
-  std::memcpy(&value, at, sizeof value);
-  return value;
-}
-
-template <class Signed, class Unsigned>
-double integer_value(bool is_signed, const unsigned char* at) {
-  return is_signed ? static_cast<double>(load<Signed>(at)) : static_cast<double>(load<Unsigned>(at));
-}
-
-double integer_value(const abi::ParamType& type, const unsigned char* at) {
-  const bool is_signed = type.kind == abi::ParamKind::kSigned;
-  switch (type.size) {
-    case 1: return integer_value<std::int8_t, std::uint8_t>(is_signed, at);
-    case 2: return integer_value<std::int16_t, std::uint16_t>(is_signed, at);
-    case 4: return integer_value<std::int32_t, std::uint32_t>(is_signed, at);
-    default: return integer_value<std::int64_t, std::uint64_t>(is_signed, at);
-  }
-}
-
 void append_numbers(const abi::ParamType& type, const unsigned char* at, std::vector<double>& out) {
   using abi::ParamKind;
   switch (type.kind) {
-    case ParamKind::kFloat: out.push_back(load<float>(at)); break;
-    case ParamKind::kDouble: out.push_back(load<double>(at)); break;
-    case ParamKind::kLongDouble: out.push_back(static_cast<double>(load<long double>(at))); break;
-    case ParamKind::kBool: out.push_back(load<bool>(at) ? 1 : 0); break;
+    case ParamKind::kFloat: out.push_back(load_param<float>(at)); break;
+    case ParamKind::kDouble: out.push_back(load_param<double>(at)); break;
+    case ParamKind::kLongDouble: out.push_back(static_cast<double>(load_param<long double>(at))); break;
+    case ParamKind::kBool: out.push_back(load_param<bool>(at) ? 1 : 0); break;
     case ParamKind::kSigned:
-    case ParamKind::kUnsigned: out.push_back(integer_value(type, at)); break;
+    case ParamKind::kUnsigned:
+      out.push_back(with_integer(type, at, [](auto v) { return static_cast<double>(v); }));
+      break;
     case ParamKind::kEnum: append_numbers(*type.element, at, out); break;
     case ParamKind::kVector:
     case ParamKind::kArray:

@@ -1,21 +1,14 @@
 #include "lstring/param_text.h"
 
 #include <charconv>
-#include <cstdint>
-#include <cstring>
+
+#include "lstring/param_values.h"
 
 namespace sylva {
 namespace {
 
 using abi::ParamKind;
 using abi::ParamType;
-
-template <class T>
-T load(const unsigned char* at) {
-  T value;
-  std::memcpy(&value, at, sizeof value);
-  return value;
-}
 
 template <class T>
 void append_number(T value, NumberStyle style, std::string& out) {
@@ -28,24 +21,6 @@ void append_number(T value, NumberStyle style, std::string& out) {
     r = std::to_chars(text, text + sizeof text, value);
   }
   out.append(text, r.ptr);
-}
-
-void append_integer(const ParamType& type, const unsigned char* at, std::string& out) {
-  const bool is_signed = type.kind == ParamKind::kSigned;
-  switch (type.size) {
-    case 1:
-      return is_signed ? append_number(load<std::int8_t>(at), NumberStyle::kExact, out)
-                       : append_number(load<std::uint8_t>(at), NumberStyle::kExact, out);
-    case 2:
-      return is_signed ? append_number(load<std::int16_t>(at), NumberStyle::kExact, out)
-                       : append_number(load<std::uint16_t>(at), NumberStyle::kExact, out);
-    case 4:
-      return is_signed ? append_number(load<std::int32_t>(at), NumberStyle::kExact, out)
-                       : append_number(load<std::uint32_t>(at), NumberStyle::kExact, out);
-    default:
-      return is_signed ? append_number(load<std::int64_t>(at), NumberStyle::kExact, out)
-                       : append_number(load<std::uint64_t>(at), NumberStyle::kExact, out);
-  }
 }
 
 void append_bytes(const unsigned char* at, std::size_t n, std::string& out) {
@@ -86,12 +61,13 @@ bool from_table(const ParamType* type, NumberStyle style) {
 
 void append_value(const ParamType& type, const unsigned char* at, NumberStyle style, std::string& out) {
   switch (type.kind) {
-    case ParamKind::kFloat: return append_number(load<float>(at), style, out);
-    case ParamKind::kDouble: return append_number(load<double>(at), style, out);
-    case ParamKind::kLongDouble: return append_number(load<long double>(at), style, out);
-    case ParamKind::kBool: out += load<bool>(at) ? '1' : '0'; return;
+    case ParamKind::kFloat: return append_number(load_param<float>(at), style, out);
+    case ParamKind::kDouble: return append_number(load_param<double>(at), style, out);
+    case ParamKind::kLongDouble: return append_number(load_param<long double>(at), style, out);
+    case ParamKind::kBool: out += load_param<bool>(at) ? '1' : '0'; return;
     case ParamKind::kSigned:
-    case ParamKind::kUnsigned: return append_integer(type, at, out);
+    case ParamKind::kUnsigned:
+      return with_integer(type, at, [&](auto v) { append_number(v, NumberStyle::kExact, out); });
     case ParamKind::kEnum: return append_value(*type.element, at, style, out);
     case ParamKind::kVector:
     case ParamKind::kArray:
@@ -112,7 +88,7 @@ void append_value(const ParamType& type, const unsigned char* at, NumberStyle st
       }
       out += '}';
       return;
-    case ParamKind::kText: return append_text(load<const char*>(at), out);
+    case ParamKind::kText: return append_text(load_param<const char*>(at), out);
     case ParamKind::kOther: return append_bytes(at, type.size, out);
   }
 }
