@@ -1,6 +1,8 @@
 #include "lstring/param_text.h"
 
 #include <charconv>
+#include <cstdint>
+#include <cstring>
 
 #include "lstring/param_values.h"
 
@@ -10,17 +12,60 @@ namespace {
 using abi::ParamKind;
 using abi::ParamType;
 
+// The text of the floating-point number last written, per type and thread.
+// Successive modules of a plant's string very often carry the same value
+// (the segments of one generation, the same angle), and the shortest-text
+// search costs far more than comparing the bits.
+template <class T>
+struct LastNumberText {
+  T value{};
+  NumberStyle style = NumberStyle::kExact;
+  unsigned char length = 0;  // 0: nothing cached yet
+  char text[62];
+};
+
+template <class T>
+bool same_bits(T a, T b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+template <class T>
+void append_float(T value, NumberStyle style, std::string& out) {
+  // Small whole numbers: the shortest exact text and %g are both the
+  // integer's digits. Below 10^5 the fixed form is never longer than the
+  // exponent form, so to_chars would choose it too; -0 keeps its sign
+  // through to_chars.
+  if (value > -100000 && value < 100000 && value != 0) {
+    const auto whole = static_cast<std::int32_t>(value);
+    if (static_cast<T>(whole) == value) {
+      char text[16];
+      out.append(text, static_cast<std::size_t>(std::to_chars(text, text + sizeof text, whole).ptr - text));
+      return;
+    }
+  }
+  thread_local LastNumberText<T> last;
+  if (last.length && last.style == style && same_bits(last.value, value)) {
+    out.append(last.text, last.length);
+    return;
+  }
+  const std::to_chars_result r =
+      style == NumberStyle::kCpfg
+          ? std::to_chars(last.text, last.text + sizeof last.text, value, std::chars_format::general, 6)
+          : std::to_chars(last.text, last.text + sizeof last.text, value);
+  last.value = value;
+  last.style = style;
+  last.length = static_cast<unsigned char>(r.ptr - last.text);
+  out.append(last.text, last.length);
+}
+
 template <class T>
 void append_number(T value, NumberStyle style, std::string& out) {
-  char text[64];
-  std::to_chars_result r;
   if constexpr (std::is_floating_point_v<T>) {
-    r = style == NumberStyle::kCpfg ? std::to_chars(text, text + sizeof text, value, std::chars_format::general, 6)
-                                     : std::to_chars(text, text + sizeof text, value);
+    append_float(value, style, out);
   } else {
-    r = std::to_chars(text, text + sizeof text, value);
+    char text[32];
+    out.append(text, static_cast<std::size_t>(std::to_chars(text, text + sizeof text, value).ptr - text));
   }
-  out.append(text, r.ptr);
 }
 
 void append_bytes(const unsigned char* at, std::size_t n, std::string& out) {

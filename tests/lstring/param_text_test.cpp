@@ -70,6 +70,24 @@ TEST(ParamText, FloatsReadBackToTheSameValue) {
   }
 }
 
+// Whole numbers and repeated values take shortcuts past the shortest-text
+// search; the text must be what that search gives: the digits up to 99999,
+// the exponent form from 100000 on where it is shorter ("1e+05" has five
+// characters, "100000" six), the sign of -0, and a repeated value's text in
+// either style.
+TEST(ParamText, WholeAndRepeatedNumbersWriteTheSameText) {
+  EXPECT_EQ(Block().add(kFloat, 60.0f).add(kFloat, -120.0f).add(kFloat, 99999.0f).text(), "60,-120,99999");
+  EXPECT_EQ(Block().add(kFloat, 100000.0f).add(kFloat, 110000.0f).add(kDouble, -1e5).text(), "1e+05,110000,-1e+05");
+  EXPECT_EQ(Block().add(kFloat, -0.0f).add(kFloat, 0.0f).add(kDouble, -0.0).text(), "-0,0,-0");
+  EXPECT_EQ(Block().add(kFloat, 0.5f).add(kFloat, 0.5f).add(kFloat, 0.25f).add(kFloat, 0.5f).text(),
+            "0.5,0.5,0.25,0.5");
+  const float third = 1.0f / 3.0f;
+  EXPECT_EQ(Block().add(kFloat, third).text(), "0.33333334");
+  EXPECT_EQ(Block().add(kFloat, third).text(NumberStyle::kCpfg), "0.333333");
+  EXPECT_EQ(Block().add(kFloat, third).text(), "0.33333334");
+  EXPECT_EQ(Block().add(kDouble, 1.0 / 3.0).add(kFloat, third).text(), "0.3333333333333333,0.33333334");
+}
+
 TEST(ParamText, CpfgWritesPercentG) {
   EXPECT_EQ(Block().add(kFloat, 1.0f / 3.0f).add(kFloat, 1234567.0f).add(kFloat, 2.0f).text(NumberStyle::kCpfg),
             "0.333333,1.23457e+06,2");
