@@ -73,17 +73,42 @@ std::size_t grown_capacity(std::size_t current, std::size_t needed) {
   return capacity;
 }
 
-void grow_buffer(abi::ModuleBuffer* b, std::size_t min_capacity) {
-  std::size_t capacity = grown_capacity(b->capacity, min_capacity);
-  if (const RunBudget* budget = RunBudget::active()) {
-    // Near the memory limit a string grows by what it needs, not by half.
-    capacity = std::max(min_capacity, std::min(capacity, budget->affordable(capacity)));
+// Faults in the pages of a mapped buffer from where those faulted in end to at
+// least `needed` and an eighth of the buffer beyond, with one call, and
+// returns where they now end. On virtual machines a page fault traps to the
+// hypervisor, and faulting a stretch in at once took koch's derivation from
+// 1.29 s to about 0.6 s; the eighth keeps what is faulted in but unused
+// small. Where the kernel cannot (before Linux 5.14) pages fault in one by
+// one, as they would anyway.
+std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
+  const std::size_t from = b.capacity / kPage * kPage;
+  const std::size_t ahead = std::max(needed, from + std::max(kMappedBuffer, from / 8));
+  const std::size_t to = std::min(b.reserved, (ahead + kPage - 1) / kPage * kPage);
+#ifdef MADV_POPULATE_WRITE
+  if (to > from) madvise(b.data + from, to - from, MADV_POPULATE_WRITE);
+#endif
+  return to;
+}
+
+void grow_buffer(abi::ModuleBuffer* buffer, std::size_t min_capacity) {
+  // Every buffer with this function is a ModuleString's.
+  OwnedModuleBuffer& b = *static_cast<OwnedModuleBuffer*>(buffer);
+  const RunBudget* budget = RunBudget::active();
+  if (budget) {
     budget->check_time();
-    budget->check_modules(b->data, b->size);
-    budget->check_memory(capacity);
+    budget->check_modules(b.data, b.size);
   }
-  b->data = reallocate_bytes(b->data, b->capacity, b->size, capacity);
-  b->capacity = capacity;
+  if (min_capacity > b.reserved) {
+    std::size_t reserved = grown_capacity(b.reserved, min_capacity);
+    if (budget) {
+      // Near the memory limit a string grows by what it needs, not by half.
+      reserved = std::max(min_capacity, std::min(reserved, budget->affordable(reserved)));
+      budget->check_memory(reserved);
+    }
+    b.data = reallocate_bytes(b.data, b.reserved, b.size, reserved);
+    b.reserved = reserved;
+  }
+  b.capacity = is_mapped(b.reserved) ? populate(b, min_capacity) : b.reserved;
 }
 
 }  // namespace
@@ -94,19 +119,19 @@ void use_huge_pages(bool on) { huge_pages.store(on, std::memory_order_relaxed); 
 
 ModuleString::ModuleString() { buffer_.grow = &grow_buffer; }
 
-ModuleString::~ModuleString() { free_bytes(buffer_.data, buffer_.capacity); }
+ModuleString::~ModuleString() { free_bytes(buffer_.data, buffer_.reserved); }
 
 ModuleString::ModuleString(ModuleString&& other) noexcept : buffer_(other.buffer_) {
   other.buffer_.data = nullptr;
-  other.buffer_.size = other.buffer_.capacity = 0;
+  other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
 }
 
 ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
   if (this != &other) {
-    free_bytes(buffer_.data, buffer_.capacity);
+    free_bytes(buffer_.data, buffer_.reserved);
     buffer_ = other.buffer_;
     other.buffer_.data = nullptr;
-    other.buffer_.size = other.buffer_.capacity = 0;
+    other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
   }
   return *this;
 }
@@ -147,6 +172,11 @@ void PrependBuffer::grow(std::size_t needed) {
     budget->check_memory(capacity);
   }
   unsigned char* data = allocate_bytes(capacity);
+  // The free front will be filled before the buffer grows again: fault it in
+  // at once (see populate).
+#ifdef MADV_POPULATE_WRITE
+  if (is_mapped(capacity)) madvise(data, capacity, MADV_POPULATE_WRITE);
+#endif
   if (used) std::memcpy(data + capacity - used, data_ + begin_, used);
   free_bytes(data_, capacity_);
   data_ = data;

@@ -11,6 +11,8 @@
 
 namespace sylva {
 
+class BranchIndex;
+
 // Reading an encoded string.
 inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) {
   ModuleId id;
@@ -39,10 +41,22 @@ struct StringView {
   std::size_t end = 0;
   const std::uint32_t* sizes = nullptr;  // encoded size by module id
   bool ring = false;  // context matching wraps around: first and last modules are neighbours
+  // Where the branches of `data` open and close, when indexed (never for a
+  // ring); context matching then skips a branch without walking it.
+  const BranchIndex* branches = nullptr;
 
   ModuleId id_at(std::size_t offset) const { return module_id_at(data, offset); }
   std::size_t next(std::size_t offset) const { return offset + sizes[id_at(offset)]; }
   std::size_t previous(std::size_t offset) const { return offset - sizes[module_id_before(data, offset)]; }
+};
+
+// A string's buffer as the engine keeps it. A large buffer is mapped with
+// room to grow (`reserved`), and its `capacity`, all a compiled model sees,
+// ends where the pages already faulted in end: a model appending past it
+// calls `grow`, which faults in the next stretch with one call instead of a
+// fault per page.
+struct OwnedModuleBuffer : abi::ModuleBuffer {
+  std::size_t reserved = 0;  // bytes allocated; capacity <= reserved
 };
 
 // An owned, growable string of modules.
@@ -82,7 +96,7 @@ class ModuleString {
   std::size_t count_modules(const ModuleTypes& types) const;
 
  private:
-  abi::ModuleBuffer buffer_;
+  OwnedModuleBuffer buffer_;
 };
 
 // A buffer filled from its end toward its start: backward derivation builds
