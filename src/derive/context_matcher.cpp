@@ -1,16 +1,38 @@
 #include "derive/context_matcher.h"
 
+#include "lstring/branch_index.h"
 #include "sylva/predefined_ids.h"
 
 namespace sylva::derive {
 namespace {
+
 constexpr ModuleId kSB = rt::mid::SB;
 constexpr ModuleId kEB = rt::mid::EB;
+
+// Modules walked before a skip asks the index (where the view has one):
+// short branches cost less to walk than the index's lookups, and a pass that
+// meets only short ones never builds it.
+constexpr int kWalkedFirst = 16;
+
+int walk_budget(const StringView& s) { return s.branches ? kWalkedFirst : -1; }
+
+// The partner of the bracket at `bracket` from the index, if it lies in the
+// view; kUnmatched otherwise, as a walk would find none there.
+std::size_t indexed_partner(const StringView& s, std::size_t bracket) {
+  const std::size_t partner = s.branches->partner(bracket);
+  return partner >= s.begin && partner < s.end ? partner : BranchIndex::kUnmatched;
+}
+
 }  // namespace
 
 std::size_t skip_branch_forward(const StringView& s, std::size_t sb) {
   int depth = 0;
+  int budget = walk_budget(s);
   for (std::size_t at = sb; at < s.end; at = s.next(at)) {
+    if (budget-- == 0) {
+      const std::size_t eb = indexed_partner(s, sb);
+      return eb == BranchIndex::kUnmatched ? s.end : s.next(eb);
+    }
     ModuleId id = s.id_at(at);
     if (id == kSB) ++depth;
     else if (id == kEB && --depth == 0) return s.next(at);
@@ -19,18 +41,22 @@ std::size_t skip_branch_forward(const StringView& s, std::size_t sb) {
 }
 
 std::size_t find_unmatched_end(const StringView& s, std::size_t pos) {
-  int depth = 0;
-  for (std::size_t at = pos; at < s.end; at = s.next(at)) {
-    ModuleId id = s.id_at(at);
-    if (id == kSB) ++depth;
-    else if (id == kEB && depth-- == 0) return at;
+  for (std::size_t at = pos; at < s.end;) {
+    const ModuleId id = s.id_at(at);
+    if (id == kEB) return at;
+    at = id == kSB ? skip_branch_forward(s, at) : s.next(at);
   }
   return s.end;
 }
 
 std::size_t skip_branch_backward(const StringView& s, std::size_t eb) {
   int depth = 0;
+  int budget = walk_budget(s);
   for (std::size_t at = s.next(eb); at > s.begin;) {
+    if (budget-- == 0) {
+      const std::size_t sb = indexed_partner(s, eb);
+      return sb == BranchIndex::kUnmatched ? s.begin : sb;
+    }
     at = s.previous(at);
     ModuleId id = s.id_at(at);
     if (id == kEB) ++depth;
@@ -61,8 +87,15 @@ bool wrap_backward(const StringView& s, ContextCursor& c) {
 
 // From the SB at the cursor to just past its EB; false if it never closes.
 bool skip_branch_forward(const StringView& s, ContextCursor& c) {
+  const std::size_t sb = c.at;
   int depth = 0;
+  int budget = walk_budget(s);  // an index means no ring: the cursor cannot wrap
   while (wrap_forward(s, c)) {
+    if (budget-- == 0) {
+      const std::size_t eb = indexed_partner(s, sb);
+      c.at = eb == BranchIndex::kUnmatched ? s.end : s.next(eb);
+      return eb != BranchIndex::kUnmatched;
+    }
     const ModuleId id = s.id_at(c.at);
     c.at = s.next(c.at);
     if (id == kSB) ++depth;
@@ -74,8 +107,15 @@ bool skip_branch_forward(const StringView& s, ContextCursor& c) {
 // From the EB just before the cursor back to its SB (the cursor ends on the
 // SB); false if it never opens.
 bool skip_branch_backward(const StringView& s, ContextCursor& c) {
+  const std::size_t eb = s.previous(c.at);
   int depth = 0;
+  int budget = walk_budget(s);
   while (wrap_backward(s, c)) {
+    if (budget-- == 0) {
+      const std::size_t sb = indexed_partner(s, eb);
+      c.at = sb == BranchIndex::kUnmatched ? s.begin : sb;
+      return sb != BranchIndex::kUnmatched;
+    }
     c.at = s.previous(c.at);
     const ModuleId id = s.id_at(c.at);
     if (id == kEB) ++depth;
@@ -89,12 +129,28 @@ bool skip_branch_backward(const StringView& s, ContextCursor& c) {
 bool match_right_context(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n, SkipTable skipped,
                          const unsigned char** params) {
   ContextCursor c = from;
+  // The SBs the pattern has entered and not left, innermost last: with an
+  // index, the EB a pattern expects is the innermost one's partner, and the
+  // rest of the branch need not be walked. Not where brackets are flat.
+  constexpr int kMostOpen = 16;
+  std::size_t open[kMostOpen];
+  int depth = 0;
+  const bool jump_to_eb =
+      s.branches && !(skipped && (skipped[kSB] == kFlatBracket || skipped[kEB] == kFlatBracket));
   for (int k = 0; k < n; ++k) {
     const ModuleId want = pattern[k];
+    int budget = want == kEB && jump_to_eb && depth > 0 && depth <= kMostOpen ? kWalkedFirst : -1;
     while (true) {
+      if (budget-- == 0) {
+        const std::size_t eb = indexed_partner(s, open[depth - 1]);
+        if (eb == BranchIndex::kUnmatched) return false;
+        c.at = eb;
+      }
       if (!wrap_forward(s, c)) return false;
       const ModuleId id = s.id_at(c.at);
       if (id == want) {
+        if (want == kSB && depth++ < kMostOpen) open[depth - 1] = c.at;
+        else if (want == kEB && depth > 0) --depth;
         params[k] = module_params(s.data, c.at);
         c.at = s.next(c.at);
         break;

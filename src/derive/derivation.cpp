@@ -81,8 +81,12 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
   sub_lsystems_ = (model.flags & abi::kModelSubLsystems) != 0;
   lsystems_.assign(1, sub_lsystems_ ? model.main_lsystem : 0);
   uses_query_modules_ = predecessor_holds({rt::mid::GetPos, rt::mid::GetHead, rt::mid::GetLeft, rt::mid::GetUp});
-  for (std::uint32_t r = 0; r < model.rule_count; ++r)
-    if (model.rules[r].kind == RuleKind::Interpretation && model.rules[r].view != 0) has_views_ = true;
+  for (std::uint32_t r = 0; r < model.rule_count; ++r) {
+    const abi::Rule& rule = model.rules[r];
+    if (rule.kind == RuleKind::Interpretation && rule.view != 0) has_views_ = true;
+    if (rule.kind == RuleKind::Production && (rule.part_length[abi::kLeft] || rule.part_length[abi::kRight]))
+      productions_read_context_ = true;
+  }
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
 }
@@ -116,7 +120,15 @@ void Derivation::message(const std::string& text) const {
 StringView Derivation::current_view() const {
   StringView v = string_.view(types_);
   v.ring = ring_;
+  if (branches_ready_) v.branches = &branches_;
   return v;
+}
+
+void Derivation::index_branches() {
+  // Below this any branch is cheap to walk.
+  constexpr std::size_t kIndexedFrom = std::size_t{64} << 10;
+  branches_ready_ = productions_read_context_ && !ring_ && string_.size_bytes() >= kIndexedFrom;
+  if (branches_ready_) branches_.prepare(string_.view(types_));
 }
 
 SkipTable Derivation::skip_table(const abi::Rule& rule) const {
@@ -225,8 +237,15 @@ void Derivation::apply_productions() {
     KeyedRandomPass keyed(*this, RuleKind::Production);
     if (choice == GroupChoice::Undeclared) next_.assign(string_.data(), string_.size_bytes());
     else if (is_gillespie_group(model_, c.current_group)) derive_gillespie();
-    else if (c.forward) derive_forward();
-    else derive_backward();
+    else {
+      index_branches();
+      struct Unindex {  // also when the pass throws: the index is of this string only
+        bool& ready;
+        ~Unindex() { ready = false; }
+      } unindex{branches_ready_};
+      if (c.forward) derive_forward();
+      else derive_backward();
+    }
   }
   if (string_.size_bytes() > 0)
     // Capped: a step that grew a tiny string into a big one (an axiom that
@@ -529,12 +548,21 @@ void Derivation::derive_backward() {
   std::size_t pos = src.end;
   reset_lsystems();
   const int group = current_group();
+  // Modules no rule rewrites are copied a run at a time: [pos, kept_until).
+  std::size_t kept_until = pos;
+  const auto keep_run = [&] {
+    backward_out_.prepend(src.data + pos, kept_until - pos);
+  };
   while (pos > src.begin) {
     const ModuleId id = module_id_before(src.data, pos);
     std::size_t consumed = 0;
     const auto& candidates = rules_.backward(RuleKind::Production, id);
     bool applied = false;
     if (!candidates.empty()) {
+      if (kept_until != pos) {  // a rule may read the new string as right context
+        keep_run();
+        kept_until = pos;
+      }
       const StringView built{backward_out_.data(), backward_out_.begin(), backward_out_.end(),
                              types_.encoded_sizes()};
       applied = for_each_group(candidates, model_.rules, group, !sub_lsystems_, [&](const abi::Rule& rule) {
@@ -544,13 +572,12 @@ void Derivation::derive_backward() {
     if (applied) {
       backward_out_.prepend(successor_.data(), successor_.size_bytes());
       note_rewrite(consumed, pos, successor_.size_bytes());
-      pos = consumed;
+      pos = kept_until = consumed;
     } else {
-      const std::size_t start = src.previous(pos);
-      backward_out_.prepend(src.data + start, pos - start);
-      pos = start;
+      pos = src.previous(pos);
     }
   }
+  keep_run();
   next_.assign(backward_out_.data() + backward_out_.begin(), backward_out_.size_bytes());
   std::reverse(rewrites_.begin(), rewrites_.end());  // noted from the end
 }

@@ -15,6 +15,7 @@
 #include "derive/gillespie.h"
 #include "derive/parameter_writes.h"
 #include "derive/rule_index.h"
+#include "lstring/branch_index.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
 #include "sylva/abi.h"
@@ -162,6 +163,9 @@ class Derivation {
   bool predecessor_holds(const std::vector<ModuleId>& ids) const;
   // The current string as context matching sees it (a ring if the model says so).
   StringView current_view() const;
+  // Lets the production pass about to read string_ index its branches,
+  // where its rules read context and the string is long enough to pay.
+  void index_branches();
 
   // Why passes of `kind` run serially whatever the string, or empty.
   std::string serial_reason(abi::RuleKind kind) const;
@@ -246,6 +250,11 @@ class Derivation {
 
   ModuleString string_;
   ModuleString next_;
+  // Where string_'s branches open and close, while a production pass reads
+  // its context (branches_ready_).
+  BranchIndex branches_;
+  bool branches_ready_ = false;
+  bool productions_read_context_ = false;  // some production has a left or right context
   bool tracking_births_ = false;
   std::vector<std::uint32_t> births_;  // by module index of string_
   std::vector<Rewrite> rewrites_;      // of the pass running

@@ -7,6 +7,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "api/simulation.h"
 #include "derive/context_matcher.h"
 #include "io/string_text.h"
+#include "lstring/branch_index.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
 #include "sylva/predefined_ids.h"
@@ -306,6 +308,80 @@ TEST_F(ContextMatcherTest, BracketsCountEvenWhenFiltered) {
   EXPECT_EQ(left("A(1) [ D(2) ] D(3)", 4, "A", &brackets), "0:A(1)");
   // Filtering combines with branch skipping: B ignored, then the branch, then D.
   EXPECT_EQ(right("A B(1) [ C ] D(3)", 1, "D", &ad), "5:D(3)");
+}
+
+// ---- the branch index --------------------------------------------------------
+
+// Partners worked by hand: offsets are 8 bytes for A(int) and B(int) ([id]
+// [int][id]), 2 for C, [ and ].
+TEST_F(ContextMatcherTest, BranchIndexPairsEachBracketWithItsPartner) {
+  ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 8, B 10, [ 18, C 20, ] 22, ] 24, C 26
+  BranchIndex index;
+  index.prepare(s.view(types_));
+  EXPECT_EQ(index.partner(8), 24u);
+  EXPECT_EQ(index.partner(18), 22u);
+  EXPECT_EQ(index.partner(22), 18u);
+  EXPECT_EQ(index.partner(24), 8u);
+  ModuleString stray = parse("] C [ C");  // ] 0, C 2, [ 4, C 6
+  index.prepare(stray.view(types_));
+  EXPECT_EQ(index.partner(0), BranchIndex::kUnmatched);
+  EXPECT_EQ(index.partner(4), BranchIndex::kUnmatched);
+}
+
+// Skips and matches through the index give what walking the string gives,
+// on a random tree with deep and long branches, stray brackets, filters and
+// patterns that enter and leave branches.
+TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
+  std::mt19937 random(11);
+  ModuleString s;
+  int open = 0;
+  for (int k = 0; k < 40000; ++k) {
+    const unsigned roll = random() % 100;
+    int value = k;
+    ModuleId m;
+    if (roll < 22) m = rt::mid::SB, ++open;
+    else if (roll < 42 && open > 0) m = rt::mid::EB, --open;
+    else if (roll < 43) m = rt::mid::EB;  // a stray ]
+    else m = id(std::string(1, static_cast<char>('A' + random() % 5)));
+    s.append_module(m, &value, types_[m].param_size);
+  }
+  const StringView walked = s.view(types_);
+  BranchIndex index;
+  index.prepare(walked);
+  StringView indexed = walked;
+  indexed.branches = &index;
+  std::vector<std::size_t> starts;
+  for (std::size_t at = walked.begin; at < walked.end; at = walked.next(at)) starts.push_back(at);
+
+  std::size_t long_skips = 0;
+  for (std::size_t at : starts) {
+    const ModuleId m = walked.id_at(at);
+    if (m == rt::mid::SB) {
+      const std::size_t past = skip_branch_forward(walked, at);
+      ASSERT_EQ(skip_branch_forward(indexed, at), past) << at;
+      if (index_at(s, past) - index_at(s, at) > 100) ++long_skips;
+    }
+    if (m == rt::mid::EB) ASSERT_EQ(skip_branch_backward(indexed, at), skip_branch_backward(walked, at)) << at;
+    ASSERT_EQ(find_unmatched_end(indexed, at), find_unmatched_end(walked, at)) << at;
+  }
+  EXPECT_GT(long_skips, 100u);  // the index was asked, not only the first modules walked
+
+  const auto ignore_b = ignoring("B");
+  for (const std::string& text : {"A", "[ B ] C", "B [ C ] A", "[ A [ B ] ] D", "A ] C", "[ [ A ] B ] C"})
+    for (const std::vector<std::uint8_t>* skip : {static_cast<const std::vector<std::uint8_t>*>(nullptr), &ignore_b}) {
+      const std::vector<ModuleId> p = pattern(text);
+      const int n = static_cast<int>(p.size());
+      for (std::size_t k = 0; k < starts.size(); k += 3) {
+        std::vector<const unsigned char*> by_walk(p.size()), by_index(p.size());
+        const std::uint8_t* table = skip ? skip->data() : nullptr;
+        const bool r = match_right_context(walked, starts[k], p.data(), n, table, by_walk.data());
+        ASSERT_EQ(match_right_context(indexed, starts[k], p.data(), n, table, by_index.data()), r) << text << k;
+        if (r) ASSERT_EQ(by_index, by_walk) << text << k;
+        const bool l = match_left_context(walked, starts[k], p.data(), n, table, by_walk.data());
+        ASSERT_EQ(match_left_context(indexed, starts[k], p.data(), n, table, by_index.data()), l) << text << k;
+        if (l) ASSERT_EQ(by_index, by_walk) << text << k;
+      }
+    }
 }
 
 // ---- end-to-end tests through the engine -------------------------------------

@@ -1,0 +1,64 @@
+// Where each branch of a string opens and closes, found in constant time.
+//
+// Context matching skips whole branches: a right context steps over lateral
+// branches and, after a pattern's bracket, over the rest of a branch; a left
+// context steps back over sibling branches. Walked module by module, a step
+// over a branching structure costs the size of the subtrees skipped, which
+// on a tree of depth d is about d times the string. The index answers each
+// skip with a few memory reads. It is built in one pass over the string the
+// first time a long branch is skipped, so a pass that meets none pays
+// nothing.
+//
+// Layout: a bit per byte of the string marks where a bracket (SB or EB)
+// starts; a bracket's rank is the count of brackets before its 64-byte word
+// (counted per block of words, plus a base per superblock so counts stay
+// 32-bit) and the marked bits before it in the word; the rank indexes the
+// offset of its partner.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "lstring/module_string.h"
+
+namespace sylva {
+
+class BranchIndex {
+ public:
+  static constexpr std::size_t kUnmatched = ~std::size_t{0};
+
+  // The string to index on first use, from begin to end (`string.ring` is
+  // ignored); it must not change while the index is in use. Not to be
+  // called while another thread may be asking for partners.
+  void prepare(const StringView& string);
+
+  // The offset of the bracket paired with the one starting at `bracket`: an
+  // SB's EB or an EB's SB; kUnmatched where the string has none. Safe to
+  // call from several threads at once.
+  std::size_t partner(std::size_t bracket) const {
+    if (!built_.load(std::memory_order_acquire)) build();
+    const std::size_t word = bracket >> 6;
+    const std::uint64_t before = marks_[word] & ((std::uint64_t{1} << (bracket & 63)) - 1);
+    const std::size_t rank = superblock_counts_[word >> kSuperblockBits] + counts_[word] +
+                             static_cast<std::size_t>(__builtin_popcountll(before));
+    return partners_[rank];
+  }
+
+ private:
+  static constexpr int kSuperblockBits = 20;  // words per superblock: 2^20 (64 MiB of string)
+
+  void build() const;
+
+  StringView string_;
+  mutable std::mutex building_;
+  mutable std::atomic<bool> built_{false};
+  mutable std::vector<std::uint64_t> marks_;              // bit k of word w: a bracket starts at byte 64w + k
+  mutable std::vector<std::uint32_t> counts_;             // brackets before word w within its superblock
+  mutable std::vector<std::size_t> superblock_counts_;    // brackets before each superblock
+  mutable std::vector<std::size_t> partners_;             // by rank
+};
+
+}  // namespace sylva
