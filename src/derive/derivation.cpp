@@ -240,9 +240,12 @@ void Derivation::apply_productions() {
     else {
       index_branches();
       struct Unindex {  // also when the pass throws: the index is of this string only
-        bool& ready;
-        ~Unindex() { ready = false; }
-      } unindex{branches_ready_};
+        Derivation& d;
+        ~Unindex() {
+          d.branches_needed_ = d.branches_ready_ && d.branches_.built();
+          d.branches_ready_ = false;
+        }
+      } unindex{*this};
       if (c.forward) derive_forward();
       else derive_backward();
     }
@@ -275,6 +278,9 @@ void Derivation::decompose() {
   const int depth = maximum_depth(RuleKind::Decomposition);
   reset_lsystems();
   if (!decompose_in_parallel(depth)) expand(RuleKind::Decomposition, current_view(), 0, depth, next_, expansion_);
+  if (string_.size_bytes() > 0)
+    decomposition_growth_ = std::clamp(
+        static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0, kMaxGrowthReserved);
   release_deep_expansion();
   std::swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));

@@ -178,8 +178,10 @@ class Derivation {
   bool decompose_in_parallel(int max_depth);
   // The chunks of `src` starting at `starts`, each passed through `range`
   // (from, to, out; returns where it stopped), joined into next_.
+  // `growth`: the bytes a pass like this one wrote for each byte it read.
   using RangePass = std::function<std::size_t(std::size_t chunk, std::size_t from, std::size_t to, ModuleString& out)>;
-  void run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, const RangePass& range);
+  void run_in_chunks(const StringView& src, const std::vector<std::size_t>& starts, double growth,
+                     const RangePass& range);
   // Productions applied to the modules of `src` from `from` until the first
   // one at or past `to`, appended to `out`; returns where it stopped (past
   // `to` when a predecessor of several modules or a cut spans it).
@@ -254,6 +256,7 @@ class Derivation {
   // its context (branches_ready_).
   BranchIndex branches_;
   bool branches_ready_ = false;
+  bool branches_needed_ = false;  // the last production pass built the index: build it at once, in parallel
   bool productions_read_context_ = false;  // some production has a left or right context
   bool tracking_births_ = false;
   std::vector<std::uint32_t> births_;  // by module index of string_
@@ -295,6 +298,10 @@ class Derivation {
   std::uint64_t keyed_seed_ = 0;  // of the pass running, in the keyed mode
   static constexpr double kMaxGrowthReserved = 8;
   double growth_ = 1.5;  // bytes after / before the last step, at most kMaxGrowthReserved
+  double decomposition_growth_ = 1.5;  // the same for the last decomposition
+  // How much more than the whole string the fastest-growing chunk of the
+  // last parallel pass grew (run_in_chunks).
+  double chunk_growth_spread_ = 1.25;
 };
 
 }  // namespace sylva::derive

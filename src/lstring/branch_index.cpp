@@ -1,5 +1,6 @@
 #include "lstring/branch_index.h"
 
+#include <atomic>
 #include <utility>
 
 #include "sylva/predefined_ids.h"
@@ -35,6 +36,11 @@ void BranchIndex::build() const {
       open.pop_back();
     }
   }
+  count_marks();
+  built_.store(true, std::memory_order_release);
+}
+
+void BranchIndex::count_marks() const {
   counts_.resize(marks_.size());
   superblock_counts_.assign((marks_.size() >> kSuperblockBits) + 1, 0);
   std::size_t before = 0;
@@ -42,6 +48,65 @@ void BranchIndex::build() const {
     if ((w & ((std::size_t{1} << kSuperblockBits) - 1)) == 0) superblock_counts_[w >> kSuperblockBits] = before;
     counts_[w] = static_cast<std::uint32_t>(before - superblock_counts_[w >> kSuperblockBits]);
     before += static_cast<std::size_t>(__builtin_popcountll(marks_[w]));
+  }
+}
+
+void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) {
+  constexpr ModuleId kSB = rt::mid::SB;
+  constexpr ModuleId kEB = rt::mid::EB;
+  const StringView& s = string_;
+  const std::size_t n = parts.size();
+  // Each part marks its brackets and pairs those it can on its own; the
+  // rest are its EBs closing branches opened before it, then its SBs left
+  // open, in that order.
+  struct Part {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // SB and EB offsets
+    std::vector<std::size_t> open_before, left_open;
+  };
+  std::vector<Part> found(n);
+  marks_.assign(s.end / 64 + 1, 0);
+  for_each_part(n, [&](std::size_t p) {
+    const std::size_t from = parts[p], to = p + 1 < n ? parts[p + 1] : s.end;
+    Part& part = found[p];
+    for (std::size_t at = from; at < to; at = s.next(at)) {
+      const ModuleId id = s.id_at(at);
+      if (id != kSB && id != kEB) continue;
+      const std::uint64_t bit = std::uint64_t{1} << (at & 63);
+      std::uint64_t& word = marks_[at >> 6];
+      // Words a neighbouring part may also mark are shared.
+      if ((at >> 6) == (from >> 6) || (at >> 6) == (to >> 6))
+        std::atomic_ref<std::uint64_t>(word).fetch_or(bit, std::memory_order_relaxed);
+      else
+        word |= bit;
+      if (id == kSB) {
+        part.left_open.push_back(at);
+      } else if (part.left_open.empty()) {
+        part.open_before.push_back(at);
+      } else {
+        part.pairs.emplace_back(part.left_open.back(), at);
+        part.left_open.pop_back();
+      }
+    }
+  });
+  count_marks();
+  std::size_t brackets = superblock_counts_.back() + (counts_.empty() ? 0 : counts_.back()) +
+                         (marks_.empty() ? 0 : static_cast<std::size_t>(__builtin_popcountll(marks_.back())));
+  partners_.assign(brackets, kUnmatched);
+  for_each_part(n, [&](std::size_t p) {
+    for (auto [sb, eb] : found[p].pairs) {
+      partners_[rank(sb)] = eb;
+      partners_[rank(eb)] = sb;
+    }
+  });
+  std::vector<std::size_t> open;  // SBs of earlier parts still open
+  for (const Part& part : found) {
+    for (std::size_t eb : part.open_before) {
+      if (open.empty()) break;
+      partners_[rank(open.back())] = eb;
+      partners_[rank(eb)] = open.back();
+      open.pop_back();
+    }
+    open.insert(open.end(), part.left_open.begin(), part.left_open.end());
   }
   built_.store(true, std::memory_order_release);
 }

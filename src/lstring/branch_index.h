@@ -19,6 +19,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -35,22 +36,34 @@ class BranchIndex {
   // called while another thread may be asking for partners.
   void prepare(const StringView& string);
 
+  // Builds the index prepared now, on several threads: `parts` are offsets
+  // of modules that cut the string into parts (the first at its begin),
+  // and `for_each_part(n, task)` calls task(0) ... task(n - 1), on threads
+  // of its own or not. For a pass that will need the index anyway.
+  using PartRunner = std::function<void(std::size_t count, const std::function<void(std::size_t)>& task)>;
+  void build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part);
+  // Whether the index was built since it was prepared: the pass needed it.
+  bool built() const { return built_.load(std::memory_order_acquire); }
+
   // The offset of the bracket paired with the one starting at `bracket`: an
   // SB's EB or an EB's SB; kUnmatched where the string has none. Safe to
   // call from several threads at once.
   std::size_t partner(std::size_t bracket) const {
     if (!built_.load(std::memory_order_acquire)) build();
-    const std::size_t word = bracket >> 6;
-    const std::uint64_t before = marks_[word] & ((std::uint64_t{1} << (bracket & 63)) - 1);
-    const std::size_t rank = superblock_counts_[word >> kSuperblockBits] + counts_[word] +
-                             static_cast<std::size_t>(__builtin_popcountll(before));
-    return partners_[rank];
+    return partners_[rank(bracket)];
   }
 
  private:
   static constexpr int kSuperblockBits = 20;  // words per superblock: 2^20 (64 MiB of string)
 
+  std::size_t rank(std::size_t bracket) const {
+    const std::size_t word = bracket >> 6;
+    const std::uint64_t before = marks_[word] & ((std::uint64_t{1} << (bracket & 63)) - 1);
+    return superblock_counts_[word >> kSuperblockBits] + counts_[word] +
+           static_cast<std::size_t>(__builtin_popcountll(before));
+  }
   void build() const;
+  void count_marks() const;
 
   StringView string_;
   mutable std::mutex building_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 #include "lstring/run_limits.h"
@@ -90,6 +91,17 @@ std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
   return to;
 }
 
+// The reservation a buffer of `current` bytes grows to for `needed`.
+std::size_t reservation(std::size_t current, std::size_t needed, const RunBudget* budget) {
+  std::size_t reserved = grown_capacity(current, needed);
+  if (budget) {
+    // Near the memory limit a string grows by what it needs, not by half.
+    reserved = std::max(needed, std::min(reserved, budget->affordable(reserved)));
+    budget->check_memory(reserved);
+  }
+  return reserved;
+}
+
 void grow_buffer(abi::ModuleBuffer* buffer, std::size_t min_capacity) {
   // Every buffer with this function is a ModuleString's.
   OwnedModuleBuffer& b = *static_cast<OwnedModuleBuffer*>(buffer);
@@ -99,16 +111,27 @@ void grow_buffer(abi::ModuleBuffer* buffer, std::size_t min_capacity) {
     budget->check_modules(b.data, b.size);
   }
   if (min_capacity > b.reserved) {
-    std::size_t reserved = grown_capacity(b.reserved, min_capacity);
-    if (budget) {
-      // Near the memory limit a string grows by what it needs, not by half.
-      reserved = std::max(min_capacity, std::min(reserved, budget->affordable(reserved)));
-      budget->check_memory(reserved);
+    std::size_t reserved = reservation(b.reserved, min_capacity, budget);
+    if (b.lent) {  // the window is full: on in a buffer of its own
+      unsigned char* own = allocate_bytes(reserved);
+      std::memcpy(own, b.data, b.size);
+      b.data = own;
+      b.capacity = b.size;
+      b.lent = false;
+      b.reserved = reserved;
+    } else {
+      b.data = reallocate_bytes(b.data, b.reserved, b.size, reserved);
+      b.reserved = reserved;
     }
-    b.data = reallocate_bytes(b.data, b.reserved, b.size, reserved);
-    b.reserved = reserved;
   }
   b.capacity = is_mapped(b.reserved) ? populate(b, min_capacity) : b.reserved;
+}
+
+void release(OwnedModuleBuffer& b) {
+  if (!b.lent) free_bytes(b.data, b.reserved);
+  b.data = nullptr;
+  b.size = b.capacity = b.reserved = 0;
+  b.lent = false;
 }
 
 }  // namespace
@@ -119,25 +142,58 @@ void use_huge_pages(bool on) { huge_pages.store(on, std::memory_order_relaxed); 
 
 ModuleString::ModuleString() { buffer_.grow = &grow_buffer; }
 
-ModuleString::~ModuleString() { free_bytes(buffer_.data, buffer_.reserved); }
+ModuleString::~ModuleString() { release(buffer_); }
 
 ModuleString::ModuleString(ModuleString&& other) noexcept : buffer_(other.buffer_) {
   other.buffer_.data = nullptr;
   other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
+  other.buffer_.lent = false;
 }
 
 ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
   if (this != &other) {
-    free_bytes(buffer_.data, buffer_.reserved);
+    release(buffer_);
     buffer_ = other.buffer_;
     other.buffer_.data = nullptr;
     other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
+    other.buffer_.lent = false;
   }
   return *this;
 }
 
 void ModuleString::reserve(std::size_t bytes) {
   if (bytes > buffer_.capacity) grow_buffer(&buffer_, bytes);
+}
+
+void ModuleString::reserve_unwritten(std::size_t bytes) {
+  buffer_.size = 0;
+  if (bytes > buffer_.reserved) grow_unwritten(bytes, 0);
+}
+
+void ModuleString::reserve_unwritten_keeping(std::size_t bytes) {
+  if (bytes > buffer_.reserved) grow_unwritten(bytes, buffer_.reserved);
+}
+
+void ModuleString::grow_unwritten(std::size_t bytes, std::size_t kept) {
+  const RunBudget* budget = RunBudget::active();
+  if (budget) budget->check_time();
+  std::size_t reserved = reservation(buffer_.reserved, bytes, budget);
+  buffer_.data = reallocate_bytes(buffer_.data, buffer_.reserved, kept, reserved);
+  buffer_.reserved = reserved;
+  buffer_.capacity = std::min(buffer_.capacity, reserved);
+}
+
+void ModuleString::write_into(unsigned char* window, std::size_t room) {
+  release(buffer_);
+  buffer_.data = window;
+  buffer_.reserved = room;
+  buffer_.lent = true;
+}
+
+void ModuleString::set_written_size(std::size_t size) {
+  buffer_.size = size;
+  // Written means faulted in: the capacity goes on from there.
+  if (size > buffer_.capacity) buffer_.capacity = std::min(buffer_.reserved, (size + kPage - 1) / kPage * kPage);
 }
 
 void ModuleString::append_module(ModuleId id, const void* params, std::size_t param_size) {

@@ -56,7 +56,8 @@ struct StringView {
 // calls `grow`, which faults in the next stretch with one call instead of a
 // fault per page.
 struct OwnedModuleBuffer : abi::ModuleBuffer {
-  std::size_t reserved = 0;  // bytes allocated; capacity <= reserved
+  std::size_t reserved = 0;  // bytes allocated, or lent; capacity <= reserved
+  bool lent = false;         // the bytes are a window of another string's buffer
 };
 
 // An owned, growable string of modules.
@@ -87,6 +88,23 @@ class ModuleString {
     buffer_.size += n;
   }
   void append_module(ModuleId id, const void* params, std::size_t param_size);
+
+  // Writing in place: a parallel pass's chunks write their parts of the next
+  // string straight into its buffer, each in a window of it, so that the
+  // parts need no copying into one string and no memory of their own.
+  // Maps `bytes` for this string without faulting them in (the windows'
+  // writers do that), and empties it.
+  void reserve_unwritten(std::size_t bytes);
+  // The same for a string whose windows are being written: their bytes are
+  // kept, and may move (they are at the same offsets from data()).
+  void reserve_unwritten_keeping(std::size_t bytes);
+  // From now on this string (emptied) writes into the `room` bytes at
+  // `window`, a page boundary in another string's buffer; past them it moves
+  // what it has into a buffer of its own and goes on there.
+  void write_into(unsigned char* window, std::size_t room);
+  bool writes_in_window() const { return buffer_.lent; }
+  // The first `size` bytes were written through windows.
+  void set_written_size(std::size_t size);
   // Takes the bytes of a finished buffer (used by backward derivation).
   void assign(const unsigned char* bytes, std::size_t n);
 
@@ -96,6 +114,8 @@ class ModuleString {
   std::size_t count_modules(const ModuleTypes& types) const;
 
  private:
+  void grow_unwritten(std::size_t bytes, std::size_t kept);
+
   OwnedModuleBuffer buffer_;
 };
 

@@ -5,7 +5,9 @@
 // manual's rules.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <functional>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -141,6 +143,25 @@ class ContextMatcherTest : public ::testing::Test {
     std::vector<std::uint8_t> t(types_.size(), 1);
     for (ModuleId m : pattern(names)) t[m] = 0;
     return t;
+  }
+
+  // A random branching string of `modules` modules, brackets mostly
+  // balanced, with stray ]s and [s left open.
+  ModuleString random_tree(unsigned seed, int modules) const {
+    std::mt19937 random(seed);
+    ModuleString s;
+    int open = 0;
+    for (int k = 0; k < modules; ++k) {
+      const unsigned roll = random() % 100;
+      int value = k;
+      ModuleId m;
+      if (roll < 22) m = rt::mid::SB, ++open;
+      else if (roll < 42 && open > 0) m = rt::mid::EB, --open;
+      else if (roll < 43) m = rt::mid::EB;  // a stray ]
+      else m = id(std::string(1, static_cast<char>('A' + random() % 5)));
+      s.append_module(m, &value, types_[m].param_size);
+    }
+    return s;
   }
 
   ModuleTypes types_;
@@ -332,19 +353,7 @@ TEST_F(ContextMatcherTest, BranchIndexPairsEachBracketWithItsPartner) {
 // on a random tree with deep and long branches, stray brackets, filters and
 // patterns that enter and leave branches.
 TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
-  std::mt19937 random(11);
-  ModuleString s;
-  int open = 0;
-  for (int k = 0; k < 40000; ++k) {
-    const unsigned roll = random() % 100;
-    int value = k;
-    ModuleId m;
-    if (roll < 22) m = rt::mid::SB, ++open;
-    else if (roll < 42 && open > 0) m = rt::mid::EB, --open;
-    else if (roll < 43) m = rt::mid::EB;  // a stray ]
-    else m = id(std::string(1, static_cast<char>('A' + random() % 5)));
-    s.append_module(m, &value, types_[m].param_size);
-  }
+  const ModuleString s = random_tree(11, 40000);
   const StringView walked = s.view(types_);
   BranchIndex index;
   index.prepare(walked);
@@ -382,6 +391,34 @@ TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
         if (l) ASSERT_EQ(by_index, by_walk) << text << k;
       }
     }
+}
+
+// Built in parts (as a parallel pass builds it), the index pairs every
+// bracket as the one-pass build does, wherever the parts are cut.
+TEST_F(ContextMatcherTest, BranchIndexBuiltInPartsPairsAsBuiltWhole) {
+  const ModuleString s = random_tree(5, 30000);
+  const StringView v = s.view(types_);
+  std::vector<std::size_t> brackets, starts;
+  for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
+    starts.push_back(at);
+    if (v.id_at(at) == rt::mid::SB || v.id_at(at) == rt::mid::EB) brackets.push_back(at);
+  }
+  BranchIndex whole;
+  whole.prepare(v);
+  std::mt19937 random(3);
+  for (std::size_t count : {1u, 2u, 7u, 64u}) {
+    std::vector<std::size_t> parts{v.begin};
+    for (std::size_t k = 1; k < count; ++k) parts.push_back(starts[random() % starts.size()]);
+    std::sort(parts.begin(), parts.end());
+    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    BranchIndex in_parts;
+    in_parts.prepare(v);
+    in_parts.build_in_parts(parts, [](std::size_t n, const std::function<void(std::size_t)>& task) {
+      for (std::size_t k = n; k-- > 0;) task(k);  // any order
+    });
+    ASSERT_TRUE(in_parts.built());
+    for (std::size_t b : brackets) ASSERT_EQ(in_parts.partner(b), whole.partner(b)) << count << " parts, at " << b;
+  }
 }
 
 // ---- end-to-end tests through the engine -------------------------------------
