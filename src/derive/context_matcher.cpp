@@ -16,11 +16,18 @@ constexpr int kWalkedFirst = 16;
 
 int walk_budget(const StringView& s) { return s.branches ? kWalkedFirst : -1; }
 
-// The partner of the bracket at `bracket` from the index, if it lies in the
-// view; kUnmatched otherwise, as a walk would find none there.
-std::size_t indexed_partner(const StringView& s, std::size_t bracket) {
-  const std::size_t partner = s.branches->partner(bracket);
-  return partner >= s.begin && partner < s.end ? partner : BranchIndex::kUnmatched;
+// The partner of the SB or EB at `bracket` from the index, if it lies in
+// the view; kUnmatched otherwise, as a walk would find none there; kUnknown
+// where the index cannot tell.
+std::size_t indexed_eb(const StringView& s, std::size_t sb) {
+  const std::size_t eb = s.branches->eb_of(sb);
+  if (eb == BranchPartners::kUnknown) return eb;
+  return eb >= s.begin && eb < s.end ? eb : BranchPartners::kUnmatched;
+}
+std::size_t indexed_sb(const StringView& s, std::size_t eb) {
+  const std::size_t sb = s.branches->sb_of(eb);
+  if (sb == BranchPartners::kUnknown) return sb;
+  return sb >= s.begin && sb < s.end ? sb : BranchPartners::kUnmatched;
 }
 
 }  // namespace
@@ -30,8 +37,8 @@ std::size_t skip_branch_forward(const StringView& s, std::size_t sb) {
   int budget = walk_budget(s);
   for (std::size_t at = sb; at < s.end; at = s.next(at)) {
     if (budget-- == 0) {
-      const std::size_t eb = indexed_partner(s, sb);
-      return eb == BranchIndex::kUnmatched ? s.end : s.next(eb);
+      const std::size_t eb = indexed_eb(s, sb);
+      if (eb != BranchPartners::kUnknown) return eb == BranchPartners::kUnmatched ? s.end : s.next(eb);
     }
     ModuleId id = s.id_at(at);
     if (id == kSB) ++depth;
@@ -54,8 +61,8 @@ std::size_t skip_branch_backward(const StringView& s, std::size_t eb) {
   int budget = walk_budget(s);
   for (std::size_t at = s.next(eb); at > s.begin;) {
     if (budget-- == 0) {
-      const std::size_t sb = indexed_partner(s, eb);
-      return sb == BranchIndex::kUnmatched ? s.begin : sb;
+      const std::size_t sb = indexed_sb(s, eb);
+      if (sb != BranchPartners::kUnknown) return sb == BranchPartners::kUnmatched ? s.begin : sb;
     }
     at = s.previous(at);
     ModuleId id = s.id_at(at);
@@ -92,9 +99,11 @@ bool skip_branch_forward(const StringView& s, ContextCursor& c) {
   int budget = walk_budget(s);  // an index means no ring: the cursor cannot wrap
   while (wrap_forward(s, c)) {
     if (budget-- == 0) {
-      const std::size_t eb = indexed_partner(s, sb);
-      c.at = eb == BranchIndex::kUnmatched ? s.end : s.next(eb);
-      return eb != BranchIndex::kUnmatched;
+      const std::size_t eb = indexed_eb(s, sb);
+      if (eb != BranchPartners::kUnknown) {
+        c.at = eb == BranchPartners::kUnmatched ? s.end : s.next(eb);
+        return eb != BranchPartners::kUnmatched;
+      }
     }
     const ModuleId id = s.id_at(c.at);
     c.at = s.next(c.at);
@@ -112,9 +121,11 @@ bool skip_branch_backward(const StringView& s, ContextCursor& c) {
   int budget = walk_budget(s);
   while (wrap_backward(s, c)) {
     if (budget-- == 0) {
-      const std::size_t sb = indexed_partner(s, eb);
-      c.at = sb == BranchIndex::kUnmatched ? s.begin : sb;
-      return sb != BranchIndex::kUnmatched;
+      const std::size_t sb = indexed_sb(s, eb);
+      if (sb != BranchPartners::kUnknown) {
+        c.at = sb == BranchPartners::kUnmatched ? s.begin : sb;
+        return sb != BranchPartners::kUnmatched;
+      }
     }
     c.at = s.previous(c.at);
     const ModuleId id = s.id_at(c.at);
@@ -142,9 +153,9 @@ bool match_right_context(const StringView& s, ContextCursor& from, const ModuleI
     int budget = want == kEB && jump_to_eb && depth > 0 && depth <= kMostOpen ? kWalkedFirst : -1;
     while (true) {
       if (budget-- == 0) {
-        const std::size_t eb = indexed_partner(s, open[depth - 1]);
-        if (eb == BranchIndex::kUnmatched) return false;
-        c.at = eb;
+        const std::size_t eb = indexed_eb(s, open[depth - 1]);
+        if (eb == BranchPartners::kUnmatched) return false;
+        if (eb != BranchPartners::kUnknown) c.at = eb;
       }
       if (!wrap_forward(s, c)) return false;
       const ModuleId id = s.id_at(c.at);

@@ -84,8 +84,10 @@ Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
   for (std::uint32_t r = 0; r < model.rule_count; ++r) {
     const abi::Rule& rule = model.rules[r];
     if (rule.kind == RuleKind::Interpretation && rule.view != 0) has_views_ = true;
-    if (rule.kind == RuleKind::Production && (rule.part_length[abi::kLeft] || rule.part_length[abi::kRight]))
-      productions_read_context_ = true;
+    if (rule.kind != RuleKind::Production) continue;
+    if (rule.part_length[abi::kLeft] || rule.part_length[abi::kRight]) productions_read_context_ = true;
+    if (rule.part_length[abi::kNewLeft]) productions_read_new_left_ = true;
+    if (rule.part_length[abi::kNewRight]) productions_read_new_right_ = true;
   }
   model_.control->host = this;
   model_.control->message = [](void* self, const char* text) { static_cast<Derivation*>(self)->message(text); };
@@ -402,9 +404,15 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   ContextCursor left{pos, false}, right{at, false}, new_left{built.size_bytes(), false};
   if (l && !match_left_context(src, left, rule.pattern + nl, l, skipped, params + nl)) return false;
   if (r && !match_right_context(src, right, strict + s, r, skipped, params + nl + l + s)) return false;
+  const BranchPartners* built_branches = nullptr;
+  if (&built == new_branches_of_) built_branches = &new_branches_;
   if (nl) {
     // A view made now: an earlier rule's body may have grown (and moved) the buffer.
-    const StringView new_string = built.view(types_);
+    StringView new_string = built.view(types_);
+    if (built_branches) {
+      new_branches_.catch_up(new_string);
+      new_string.branches = built_branches;
+    }
     if (!match_left_context(new_string, new_left, rule.pattern, nl, skipped, params)) return false;
   }
   if (!call_body) return true;
@@ -412,7 +420,7 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   abi::RuleCall call{out.buffer(), false};
   InBodyContext in_body(src, skipped, left, right);
   if (rule.kind != RuleKind::Interpretation)
-    in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left);
+    in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left, built_branches);
   in_body.attach(call);
   if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
   keyed_random::at_module(pos);
@@ -484,6 +492,15 @@ void Derivation::derive_forward() {
   // allocated once rather than copied on every doubling.
   next_.reserve(affordable_reserve(string_.size_bytes()));
   reset_lsystems();
+  struct FollowBrackets {  // of next_ for this pass only, also when it throws
+    Derivation& d;
+    explicit FollowBrackets(Derivation& derivation) : d(derivation) {
+      if (!d.productions_read_new_left_) return;
+      d.new_branches_.restart(BuiltBranches::Growth::kAtEnd);
+      d.new_branches_of_ = &d.next_;
+    }
+    ~FollowBrackets() { d.new_branches_of_ = nullptr; }
+  } follow(*this);
   forward_range(src, src.begin, src.end, next_);
 }
 
@@ -554,6 +571,7 @@ void Derivation::derive_backward() {
   std::size_t pos = src.end;
   reset_lsystems();
   const int group = current_group();
+  if (productions_read_new_right_) new_branches_.restart(BuiltBranches::Growth::kAtStart);
   // Modules no rule rewrites are copied a run at a time: [pos, kept_until).
   std::size_t kept_until = pos;
   const auto keep_run = [&] {
@@ -569,8 +587,11 @@ void Derivation::derive_backward() {
         keep_run();
         kept_until = pos;
       }
-      const StringView built{backward_out_.data(), backward_out_.begin(), backward_out_.end(),
-                             types_.encoded_sizes()};
+      StringView built{backward_out_.data(), backward_out_.begin(), backward_out_.end(), types_.encoded_sizes()};
+      if (productions_read_new_right_) {
+        new_branches_.catch_up(built);
+        built.branches = &new_branches_;
+      }
       applied = for_each_group(candidates, model_.rules, group, !sub_lsystems_, [&](const abi::Rule& rule) {
         return try_backward(rule, src, pos, built, &consumed);
       });

@@ -16,6 +16,7 @@
 #include "derive/parameter_writes.h"
 #include "derive/rule_index.h"
 #include "lstring/branch_index.h"
+#include "lstring/built_branches.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
 #include "sylva/abi.h"
@@ -258,6 +259,13 @@ class Derivation {
   bool branches_ready_ = false;
   bool branches_needed_ = false;  // the last production pass built the index: build it at once, in parallel
   bool productions_read_context_ = false;  // some production has a left or right context
+  // The brackets of the string a production pass is building, where some
+  // production reads it as context: next_ in a serial forward pass
+  // (new_branches_of_ while it runs), backward_out_ in a backward pass.
+  BuiltBranches new_branches_;
+  const ModuleString* new_branches_of_ = nullptr;
+  bool productions_read_new_left_ = false;
+  bool productions_read_new_right_ = false;
   bool tracking_births_ = false;
   std::vector<std::uint32_t> births_;  // by module index of string_
   std::vector<Rewrite> rewrites_;      // of the pass running

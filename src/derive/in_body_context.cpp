@@ -16,7 +16,7 @@ bool InBodyContext::test(int part, const ModuleId* pattern, int n, const unsigne
       if (!built_) return false;
       // A view made now: the body may have grown (and moved) the buffer; what
       // it appended to this rule's own successor is not context.
-      const StringView built{built_->data(), 0, built_end_, sizes_};
+      const StringView built{built_->data(), 0, built_end_, sizes_, false, built_branches_};
       return match_left_context(built, new_left_, pattern, n, skipped_, params);
     }
     case abi::kNewRight:

@@ -36,11 +36,14 @@ class InBodyContext {
   // The new string being built to the left (forward derivation): its first
   // `end` bytes, read when a test runs (the body may move the buffer by
   // appending). `from` is where the predecessor's new left context began.
-  void set_new_left(const ModuleString& built, std::size_t end, const std::uint32_t* sizes, ContextCursor from) {
+  // `branches`: its brackets' partners, if the pass follows them.
+  void set_new_left(const ModuleString& built, std::size_t end, const std::uint32_t* sizes, ContextCursor from,
+                    const BranchPartners* branches) {
     built_ = &built;
     built_end_ = end;
     sizes_ = sizes;
     new_left_ = from;
+    built_branches_ = branches;
   }
   // The new string built to the right (backward derivation).
   void set_new_right(const StringView& built, ContextCursor from) {
@@ -65,6 +68,7 @@ class InBodyContext {
   const ModuleString* built_ = nullptr;
   std::size_t built_end_ = 0;
   const std::uint32_t* sizes_ = nullptr;
+  const BranchPartners* built_branches_ = nullptr;
   ContextCursor new_left_;
   StringView new_right_string_;
   ContextCursor new_right_;

@@ -27,9 +27,23 @@
 
 namespace sylva {
 
-class BranchIndex {
+// Where the partner of a bracket is, as context matching asks it: an SB's
+// EB, an EB's SB. kUnmatched where the string has none; kUnknown where this
+// source cannot tell (the matcher then walks).
+class BranchPartners {
  public:
   static constexpr std::size_t kUnmatched = ~std::size_t{0};
+  static constexpr std::size_t kUnknown = kUnmatched - 1;
+
+  virtual std::size_t eb_of(std::size_t sb) const = 0;
+  virtual std::size_t sb_of(std::size_t eb) const = 0;
+
+ protected:
+  ~BranchPartners() = default;
+};
+
+class BranchIndex final : public BranchPartners {
+ public:
 
   // The string to index on first use, from begin to end (`string.ring` is
   // ignored); it must not change while the index is in use. Not to be
@@ -44,6 +58,9 @@ class BranchIndex {
   void build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part);
   // Whether the index was built since it was prepared: the pass needed it.
   bool built() const { return built_.load(std::memory_order_acquire); }
+
+  std::size_t eb_of(std::size_t sb) const override { return partner(sb); }
+  std::size_t sb_of(std::size_t eb) const override { return partner(eb); }
 
   // The offset of the bracket paired with the one starting at `bracket`: an
   // SB's EB or an EB's SB; kUnmatched where the string has none. Safe to

@@ -11,7 +11,7 @@
 
 namespace sylva {
 
-class BranchIndex;
+class BranchPartners;
 
 // Reading an encoded string.
 inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) {
@@ -43,7 +43,7 @@ struct StringView {
   bool ring = false;  // context matching wraps around: first and last modules are neighbours
   // Where the branches of `data` open and close, when indexed (never for a
   // ring); context matching then skips a branch without walking it.
-  const BranchIndex* branches = nullptr;
+  const BranchPartners* branches = nullptr;
 
   ModuleId id_at(std::size_t offset) const { return module_id_at(data, offset); }
   std::size_t next(std::size_t offset) const { return offset + sizes[id_at(offset)]; }

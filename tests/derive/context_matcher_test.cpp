@@ -18,6 +18,7 @@
 #include "derive/context_matcher.h"
 #include "io/string_text.h"
 #include "lstring/branch_index.h"
+#include "lstring/built_branches.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
 #include "sylva/predefined_ids.h"
@@ -419,6 +420,61 @@ TEST_F(ContextMatcherTest, BranchIndexBuiltInPartsPairsAsBuiltWhole) {
     ASSERT_TRUE(in_parts.built());
     for (std::size_t b : brackets) ASSERT_EQ(in_parts.partner(b), whole.partner(b)) << count << " parts, at " << b;
   }
+}
+
+// The brackets of a string being built, followed as it grows: appended to
+// (asked from an EB) and prepended to (asked from an SB), caught up at
+// random moments, give what walking the string gives, or say they cannot
+// tell (kUnknown) for pairs older than those they keep.
+TEST_F(ContextMatcherTest, BuiltBranchesGiveTheWalksAnswersAsTheStringGrows) {
+  const ModuleString whole = random_tree(9, 60000);
+  const StringView all = whole.view(types_);
+  std::vector<std::size_t> starts;
+  for (std::size_t at = all.begin; at < all.end; at = all.next(at)) starts.push_back(at);
+  std::mt19937 random(4);
+  std::size_t answered = 0, unknown = 0;
+
+  BuiltBranches appended;
+  appended.restart(BuiltBranches::Growth::kAtEnd);
+  for (std::size_t k = 0; k < starts.size(); k += 1 + random() % 40) {
+    StringView built = all;
+    built.end = starts[k];  // the string built so far
+    appended.catch_up(built);
+    ASSERT_EQ(appended.eb_of(0), BranchPartners::kUnknown);  // appending: asked from EBs only
+    for (std::size_t back = 0, at = built.end; back < 30 && at > built.begin; ++back) {
+      at = built.previous(at);
+      if (built.id_at(at) != rt::mid::EB) continue;
+      const std::size_t sb = appended.sb_of(at);
+      if (sb == BranchPartners::kUnknown) {
+        ++unknown;
+        continue;
+      }
+      ++answered;
+      const std::size_t walked = skip_branch_backward(built, at);
+      ASSERT_EQ(sb == BranchPartners::kUnmatched ? built.begin : sb, walked) << at;
+    }
+  }
+
+  BuiltBranches prepended;
+  prepended.restart(BuiltBranches::Growth::kAtStart);
+  for (std::size_t k = starts.size(); k > 0;) {
+    k -= std::min<std::size_t>(k, 1 + random() % 40);
+    StringView built = all;
+    built.begin = starts[k];  // the string built so far, from its end
+    prepended.catch_up(built);
+    for (std::size_t ahead = 0, at = built.begin; ahead < 30 && at < built.end; ++ahead, at = built.next(at)) {
+      if (built.id_at(at) != rt::mid::SB) continue;
+      const std::size_t eb = prepended.eb_of(at);
+      if (eb == BranchPartners::kUnknown) {
+        ++unknown;
+        continue;
+      }
+      ++answered;
+      const std::size_t walked = skip_branch_forward(built, at);
+      ASSERT_EQ(eb == BranchPartners::kUnmatched ? built.end : built.next(eb), walked) << at;
+    }
+  }
+  EXPECT_GT(answered, 1000u);
 }
 
 // ---- end-to-end tests through the engine -------------------------------------
