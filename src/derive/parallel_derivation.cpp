@@ -101,6 +101,10 @@ std::vector<std::size_t> Derivation::chunk_starts(const StringView& src) const {
   if (threads_ < 2 || bytes < 2 * min_chunk_bytes_) return {};
   const std::size_t chunks =
       std::min(bytes / min_chunk_bytes_, static_cast<std::size_t>(threads_) * kChunksPerThread);
+  // Where the last parallel pass joined the parts of this string, if it
+  // made as many: no walk needed.
+  const std::vector<std::size_t>& joins = string_.known_module_starts();
+  if (src.data == string_.data() && src.begin == 0 && joins.size() == chunks && joins.front() == 0) return joins;
   std::vector<std::size_t> starts{src.begin};
   std::size_t pos = src.begin;
   for (std::size_t c = 1; c < chunks; ++c) {
@@ -229,6 +233,10 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   for (std::size_t c = 0; c < n; ++c)
     if (!chunks[c].out.writes_in_window()) move(c);
   next_.set_written_size(total);
+  std::vector<std::size_t> joins;
+  for (std::size_t c = 0; c < n; ++c)
+    if (place[c] < total && (joins.empty() || joins.back() != place[c])) joins.push_back(place[c]);
+  next_.set_known_module_starts(std::move(joins));
 }
 
 }  // namespace sylva::derive

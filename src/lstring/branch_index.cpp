@@ -1,5 +1,6 @@
 #include "lstring/branch_index.h"
 
+#include <algorithm>
 #include <atomic>
 #include <utility>
 
@@ -18,7 +19,8 @@ void BranchIndex::build() const {
   constexpr ModuleId kSB = rt::mid::SB;
   constexpr ModuleId kEB = rt::mid::EB;
   const StringView& s = string_;
-  marks_.assign(s.end / 64 + 1, 0);
+  size_marks();
+  std::fill(marks_.get(), marks_.get() + mark_words_, 0);
   partners_.clear();
   std::vector<std::pair<std::size_t, std::size_t>> open;  // rank and offset of each SB not closed yet
   for (std::size_t at = s.begin; at < s.end; at = s.next(at)) {
@@ -40,15 +42,24 @@ void BranchIndex::build() const {
   built_.store(true, std::memory_order_release);
 }
 
-void BranchIndex::count_marks() const {
-  counts_.resize(marks_.size());
-  superblock_counts_.assign((marks_.size() >> kSuperblockBits) + 1, 0);
+void BranchIndex::size_marks() const {
+  mark_words_ = string_.end / 64 + 1;
+  if (mark_words_ > mark_room_) {
+    marks_.reset(new std::uint64_t[mark_words_]);
+    mark_room_ = mark_words_;
+  }
+}
+
+std::size_t BranchIndex::count_marks() const {
+  counts_.resize(mark_words_);
+  superblock_counts_.assign((mark_words_ >> kSuperblockBits) + 1, 0);
   std::size_t before = 0;
-  for (std::size_t w = 0; w < marks_.size(); ++w) {
+  for (std::size_t w = 0; w < mark_words_; ++w) {
     if ((w & ((std::size_t{1} << kSuperblockBits) - 1)) == 0) superblock_counts_[w >> kSuperblockBits] = before;
     counts_[w] = static_cast<std::uint32_t>(before - superblock_counts_[w >> kSuperblockBits]);
     before += static_cast<std::size_t>(__builtin_popcountll(marks_[w]));
   }
+  return before;
 }
 
 void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) {
@@ -64,9 +75,13 @@ void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const Pa
     std::vector<std::size_t> open_before, left_open;
   };
   std::vector<Part> found(n);
-  marks_.assign(s.end / 64 + 1, 0);
+  size_marks();
+  auto part_end = [&](std::size_t p) { return p + 1 < n ? parts[p + 1] : s.end; };
+  for (std::size_t p = 0; p < n; ++p) marks_[parts[p] >> 6] = 0;  // words parts share
+  marks_[s.end >> 6] = 0;
   for_each_part(n, [&](std::size_t p) {
-    const std::size_t from = parts[p], to = p + 1 < n ? parts[p + 1] : s.end;
+    const std::size_t from = parts[p], to = part_end(p);
+    if ((to >> 6) > (from >> 6) + 1) std::fill(&marks_[(from >> 6) + 1], &marks_[to >> 6], 0);
     Part& part = found[p];
     for (std::size_t at = from; at < to; at = s.next(at)) {
       const ModuleId id = s.id_at(at);
@@ -88,10 +103,7 @@ void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const Pa
       }
     }
   });
-  count_marks();
-  std::size_t brackets = superblock_counts_.back() + (counts_.empty() ? 0 : counts_.back()) +
-                         (marks_.empty() ? 0 : static_cast<std::size_t>(__builtin_popcountll(marks_.back())));
-  partners_.assign(brackets, kUnmatched);
+  partners_.assign(count_marks(), kUnmatched);
   for_each_part(n, [&](std::size_t p) {
     for (auto [sb, eb] : found[p].pairs) {
       partners_[rank(sb)] = eb;

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -80,12 +81,18 @@ class BranchIndex final : public BranchPartners {
            static_cast<std::size_t>(__builtin_popcountll(before));
   }
   void build() const;
-  void count_marks() const;
+  // Room for the marks of `string_`, not cleared.
+  void size_marks() const;
+  // Counts the marks before each word; returns them all.
+  std::size_t count_marks() const;
 
   StringView string_;
   mutable std::mutex building_;
   mutable std::atomic<bool> built_{false};
-  mutable std::vector<std::uint64_t> marks_;              // bit k of word w: a bracket starts at byte 64w + k
+  // Bit k of word w: a bracket starts at byte 64w + k. Not a vector, so a
+  // parallel build can clear the words on the threads that mark them.
+  mutable std::unique_ptr<std::uint64_t[]> marks_;
+  mutable std::size_t mark_words_ = 0, mark_room_ = 0;
   mutable std::vector<std::uint32_t> counts_;             // brackets before word w within its superblock
   mutable std::vector<std::size_t> superblock_counts_;    // brackets before each superblock
   mutable std::vector<std::size_t> partners_;             // by rank

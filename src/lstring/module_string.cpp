@@ -144,7 +144,8 @@ ModuleString::ModuleString() { buffer_.grow = &grow_buffer; }
 
 ModuleString::~ModuleString() { release(buffer_); }
 
-ModuleString::ModuleString(ModuleString&& other) noexcept : buffer_(other.buffer_) {
+ModuleString::ModuleString(ModuleString&& other) noexcept
+    : buffer_(other.buffer_), known_starts_(std::move(other.known_starts_)) {
   other.buffer_.data = nullptr;
   other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
   other.buffer_.lent = false;
@@ -154,6 +155,7 @@ ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
   if (this != &other) {
     release(buffer_);
     buffer_ = other.buffer_;
+    known_starts_ = std::move(other.known_starts_);
     other.buffer_.data = nullptr;
     other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
     other.buffer_.lent = false;
@@ -165,8 +167,13 @@ void ModuleString::reserve(std::size_t bytes) {
   if (bytes > buffer_.capacity) grow_buffer(&buffer_, bytes);
 }
 
+void ModuleString::truncate(std::size_t size) {
+  buffer_.size = size;
+  while (!known_starts_.empty() && known_starts_.back() >= size) known_starts_.pop_back();
+}
+
 void ModuleString::reserve_unwritten(std::size_t bytes) {
-  buffer_.size = 0;
+  clear();
   if (bytes > buffer_.reserved) grow_unwritten(bytes, 0);
 }
 
@@ -185,6 +192,7 @@ void ModuleString::grow_unwritten(std::size_t bytes, std::size_t kept) {
 
 void ModuleString::write_into(unsigned char* window, std::size_t room) {
   release(buffer_);
+  known_starts_.clear();
   buffer_.data = window;
   buffer_.reserved = room;
   buffer_.lent = true;
@@ -206,6 +214,7 @@ void ModuleString::append_module(ModuleId id, const void* params, std::size_t pa
 }
 
 void ModuleString::assign(const unsigned char* bytes, std::size_t n) {
+  known_starts_.clear();
   reserve(n);
   std::memcpy(buffer_.data, bytes, n);
   buffer_.size = n;

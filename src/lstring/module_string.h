@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "lstring/module_types.h"
 #include "sylva/abi.h"
@@ -79,8 +81,11 @@ class ModuleString {
   // Where compiled models append modules.
   abi::ModuleBuffer* buffer() { return &buffer_; }
 
-  void clear() { buffer_.size = 0; }
-  void truncate(std::size_t size) { buffer_.size = size; }
+  void clear() {
+    buffer_.size = 0;
+    known_starts_.clear();
+  }
+  void truncate(std::size_t size);
   void reserve(std::size_t bytes);
   void append(const unsigned char* bytes, std::size_t n) {
     buffer_.reserve_more(n);
@@ -105,6 +110,13 @@ class ModuleString {
   bool writes_in_window() const { return buffer_.lent; }
   // The first `size` bytes were written through windows.
   void set_written_size(std::size_t size);
+
+  // Offsets known to start modules, in order, or none: where a parallel pass
+  // joined its parts. The next parallel pass cuts the string there rather
+  // than walking it to find module boundaries. Appending keeps them; what
+  // replaces or cuts the string drops them.
+  const std::vector<std::size_t>& known_module_starts() const { return known_starts_; }
+  void set_known_module_starts(std::vector<std::size_t> starts) { known_starts_ = std::move(starts); }
   // Takes the bytes of a finished buffer (used by backward derivation).
   void assign(const unsigned char* bytes, std::size_t n);
 
@@ -117,6 +129,7 @@ class ModuleString {
   void grow_unwritten(std::size_t bytes, std::size_t kept);
 
   OwnedModuleBuffer buffer_;
+  std::vector<std::size_t> known_starts_;
 };
 
 // A buffer filled from its end toward its start: backward derivation builds

@@ -161,6 +161,54 @@ TEST_F(ModuleStringTest, MovesAssignsAndTruncates) {
   EXPECT_TRUE(copy.empty());
 }
 
+// A string written in place through windows of another's buffer (a
+// parallel pass's chunks): what each writes lands at its window; one that
+// outgrows its window goes on in a buffer of its own, keeping what it had;
+// the buffer's own bytes survive its growth.
+TEST_F(ModuleStringTest, WindowsWriteInPlaceAndSpillWhenFull) {
+  ModuleString whole;
+  whole.reserve_unwritten(2 << 20);
+  ModuleString first, second;
+  first.write_into(whole.data_for_writing(), 4096);
+  second.write_into(whole.data_for_writing() + 4096, 4096);
+  add_p(first, 1.5);
+  add_r(second, 1, 2, 3);
+  EXPECT_TRUE(first.writes_in_window());
+  EXPECT_EQ(first.data(), whole.data());
+  EXPECT_EQ(second.data(), whole.data() + 4096);
+  for (int k = 0; k < 400; ++k) add_p(second, k);  // 16 + 400 * 12 bytes: past 4096
+  EXPECT_FALSE(second.writes_in_window());
+  const StringView v = second.view(types_);
+  std::size_t at = v.next(v.begin);
+  double value;
+  std::memcpy(&value, module_params(v.data, at), sizeof value);
+  EXPECT_EQ(value, 0.0);
+  EXPECT_EQ(v.id_at(v.begin), kR);
+  whole.reserve_unwritten_keeping(64 << 20);
+  std::memcpy(&value, module_params(whole.data(), 0), sizeof value);
+  EXPECT_EQ(value, 1.5);
+  whole.set_written_size(12);
+  EXPECT_EQ(forward_ids(whole.view(types_)), std::vector<ModuleId>{kP});
+}
+
+// Module starts a parallel pass knows: kept while the string only grows,
+// cut with it, dropped when it is replaced or emptied, carried by moves.
+TEST_F(ModuleStringTest, KnownModuleStartsFollowTheString) {
+  ModuleString s = sample();  // P 0, Q 12, R 14, [ 30, Q 32, ] 34, P 36
+  s.set_known_module_starts({0, 14, 32});
+  add(s, kQ);
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 14, 32}));
+  s.truncate(30);
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 14}));
+  ModuleString moved = std::move(s);
+  EXPECT_EQ(moved.known_module_starts(), (std::vector<std::size_t>{0, 14}));
+  moved.assign(sample().data(), sample().size_bytes());
+  EXPECT_TRUE(moved.known_module_starts().empty());
+  moved.set_known_module_starts({0});
+  moved.clear();
+  EXPECT_TRUE(moved.known_module_starts().empty());
+}
+
 TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
   ModuleString p, q;
   add_p(p, 3);
