@@ -568,6 +568,7 @@ std::size_t Derivation::forward_range(const StringView& src, std::size_t from, s
 void Derivation::derive_backward() {
   const StringView src = current_view();
   backward_out_.clear();
+  backward_out_.reserve_more(affordable_reserve(string_.size_bytes()));
   std::size_t pos = src.end;
   reset_lsystems();
   const int group = current_group();
@@ -605,7 +606,7 @@ void Derivation::derive_backward() {
     }
   }
   keep_run();
-  next_.assign(backward_out_.data() + backward_out_.begin(), backward_out_.size_bytes());
+  next_.take(backward_out_);
   std::reverse(rewrites_.begin(), rewrites_.end());  // noted from the end
 }
 

@@ -220,6 +220,20 @@ void ModuleString::assign(const unsigned char* bytes, std::size_t n) {
   buffer_.size = n;
 }
 
+void ModuleString::take(PrependBuffer& built) {
+  const std::size_t n = built.size_bytes();
+  if (n && built.begin_) std::memmove(built.data_, built.data_ + built.begin_, n);
+  if (buffer_.lent) release(buffer_);
+  unsigned char* old_data = buffer_.data;
+  const std::size_t old_reserved = buffer_.reserved;
+  buffer_.data = built.data_;
+  buffer_.reserved = buffer_.capacity = built.capacity_;  // PrependBuffer::grow faulted it all in
+  buffer_.size = n;
+  known_starts_.clear();
+  built.data_ = old_data;
+  built.capacity_ = built.begin_ = old_reserved;
+}
+
 std::size_t ModuleString::count_modules(const ModuleTypes& types) const {
   std::size_t count = 0;
   StringView v = view(types);

@@ -14,6 +14,7 @@
 namespace sylva {
 
 class BranchPartners;
+class PrependBuffer;
 
 // Reading an encoded string.
 inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) {
@@ -119,6 +120,10 @@ class ModuleString {
   void set_known_module_starts(std::vector<std::size_t> starts) { known_starts_ = std::move(starts); }
   // Takes the bytes of a finished buffer (used by backward derivation).
   void assign(const unsigned char* bytes, std::size_t n);
+  // Takes what `built` holds, buffer and all, moved to its start; `built`
+  // goes on with this string's buffer, emptied. Backward derivation ends a
+  // step so, without copying the new string into a buffer of its own.
+  void take(PrependBuffer& built);
 
   StringView view(const ModuleTypes& types) const {
     return StringView{buffer_.data, 0, buffer_.size, types.encoded_sizes()};
@@ -143,6 +148,11 @@ class PrependBuffer {
   PrependBuffer& operator=(const PrependBuffer&) = delete;
 
   void clear() { begin_ = capacity_; }
+  // Room for `bytes` more before what is built, so that building them moves
+  // nothing.
+  void reserve_more(std::size_t bytes) {
+    if (bytes > begin_) grow(bytes);
+  }
   void prepend(const unsigned char* bytes, std::size_t n) {
     if (n > begin_) grow(n);
     begin_ -= n;
@@ -154,6 +164,7 @@ class PrependBuffer {
   std::size_t size_bytes() const { return capacity_ - begin_; }
 
  private:
+  friend class ModuleString;  // take()
   void grow(std::size_t needed);
   unsigned char* data_ = nullptr;
   std::size_t begin_ = 0;

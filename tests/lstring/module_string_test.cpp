@@ -228,5 +228,26 @@ TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
   EXPECT_EQ(b.size_bytes(), 0u);
 }
 
+// A string takes what a PrependBuffer built, buffer and all; the
+// PrependBuffer, emptied, builds on in the string's old buffer.
+TEST_F(ModuleStringTest, AStringTakesWhatAPrependBufferBuilt) {
+  ModuleString q;
+  add(q, kQ);
+  PrependBuffer b;
+  b.reserve_more(1 << 21);  // mapped: larger than a megabyte
+  for (int k = 0; k < 3; ++k) b.prepend(q.data(), q.size_bytes());
+  ModuleString p;
+  add_p(p, 3);
+  b.prepend(p.data(), p.size_bytes());
+  ModuleString s = sample();
+  s.take(b);
+  EXPECT_EQ(forward_ids(s.view(types_)), (std::vector<ModuleId>{kP, kQ, kQ, kQ}));
+  EXPECT_EQ(b.size_bytes(), 0u);
+  b.prepend(q.data(), q.size_bytes());
+  EXPECT_EQ(b.size_bytes(), 2u);
+  add(s, kSB);  // the string grows on in the buffer it took
+  EXPECT_EQ(backward_ids(s.view(types_)), (std::vector<ModuleId>{kSB, kQ, kQ, kQ, kP}));
+}
+
 }  // namespace
 }  // namespace sylva::test
