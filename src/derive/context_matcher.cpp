@@ -9,12 +9,12 @@ namespace {
 constexpr ModuleId kSB = rt::mid::SB;
 constexpr ModuleId kEB = rt::mid::EB;
 
-// Modules walked before a skip asks the index (where the view has one):
-// short branches cost less to walk than the index's lookups, and a pass that
-// meets only short ones never builds it.
+// Modules walked before a skip asks the index, where the view has one (a
+// budget of 0 never asks): short branches cost less to walk than the
+// index's lookups, and a pass that meets only short ones never builds it.
 constexpr int kWalkedFirst = 16;
 
-int walk_budget(const StringView& s) { return s.branches ? kWalkedFirst : -1; }
+int walk_budget(const StringView& s) { return s.branches ? kWalkedFirst : 0; }
 
 // The partner of the SB or EB at `bracket` from the index, if it lies in
 // the view; kUnmatched otherwise, as a walk would find none there; kUnknown
@@ -36,7 +36,7 @@ std::size_t skip_branch_forward(const StringView& s, std::size_t sb) {
   int depth = 0;
   int budget = walk_budget(s);
   for (std::size_t at = sb; at < s.end; at = s.next(at)) {
-    if (budget-- == 0) {
+    if (budget > 0 && --budget == 0) {
       const std::size_t eb = indexed_eb(s, sb);
       if (eb != BranchPartners::kUnknown) return eb == BranchPartners::kUnmatched ? s.end : s.next(eb);
     }
@@ -60,7 +60,7 @@ std::size_t skip_branch_backward(const StringView& s, std::size_t eb) {
   int depth = 0;
   int budget = walk_budget(s);
   for (std::size_t at = s.next(eb); at > s.begin;) {
-    if (budget-- == 0) {
+    if (budget > 0 && --budget == 0) {
       const std::size_t sb = indexed_sb(s, eb);
       if (sb != BranchPartners::kUnknown) return sb == BranchPartners::kUnmatched ? s.begin : sb;
     }
@@ -98,7 +98,7 @@ bool skip_branch_forward(const StringView& s, ContextCursor& c) {
   int depth = 0;
   int budget = walk_budget(s);  // an index means no ring: the cursor cannot wrap
   while (wrap_forward(s, c)) {
-    if (budget-- == 0) {
+    if (budget > 0 && --budget == 0) {
       const std::size_t eb = indexed_eb(s, sb);
       if (eb != BranchPartners::kUnknown) {
         c.at = eb == BranchPartners::kUnmatched ? s.end : s.next(eb);
@@ -120,7 +120,7 @@ bool skip_branch_backward(const StringView& s, ContextCursor& c) {
   int depth = 0;
   int budget = walk_budget(s);
   while (wrap_backward(s, c)) {
-    if (budget-- == 0) {
+    if (budget > 0 && --budget == 0) {
       const std::size_t sb = indexed_sb(s, eb);
       if (sb != BranchPartners::kUnknown) {
         c.at = sb == BranchPartners::kUnmatched ? s.begin : sb;
@@ -150,9 +150,9 @@ bool match_right_context(const StringView& s, ContextCursor& from, const ModuleI
       s.branches && !(skipped && (skipped[kSB] == kFlatBracket || skipped[kEB] == kFlatBracket));
   for (int k = 0; k < n; ++k) {
     const ModuleId want = pattern[k];
-    int budget = want == kEB && jump_to_eb && depth > 0 && depth <= kMostOpen ? kWalkedFirst : -1;
+    int budget = want == kEB && jump_to_eb && depth > 0 && depth <= kMostOpen ? kWalkedFirst : 0;
     while (true) {
-      if (budget-- == 0) {
+      if (budget > 0 && --budget == 0) {
         const std::size_t eb = indexed_eb(s, open[depth - 1]);
         if (eb == BranchPartners::kUnmatched) return false;
         if (eb != BranchPartners::kUnknown) c.at = eb;

@@ -118,7 +118,7 @@ class ModuleString {
   // replaces or cuts the string drops them.
   const std::vector<std::size_t>& known_module_starts() const { return known_starts_; }
   void set_known_module_starts(std::vector<std::size_t> starts) { known_starts_ = std::move(starts); }
-  // Takes the bytes of a finished buffer (used by backward derivation).
+  // Takes a copy of `n` bytes of modules.
   void assign(const unsigned char* bytes, std::size_t n);
   // Takes what `built` holds, buffer and all, moved to its start; `built`
   // goes on with this string's buffer, emptied. Backward derivation ends a
