@@ -126,6 +126,16 @@ StringView Derivation::current_view() const {
   return v;
 }
 
+void Derivation::note_growth(double& growth) const {
+  // Capped: a step that grew a tiny string into a big one (an axiom that
+  // sets up a whole field) says nothing about the next step, and the
+  // reservation it would ask for can exceed memory. The buffer grows by
+  // itself past the reservation.
+  if (string_.size_bytes() > 0)
+    growth = std::clamp(static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0,
+                        kMaxGrowthReserved);
+}
+
 void Derivation::index_branches() {
   // Below this any branch is cheap to walk.
   constexpr std::size_t kIndexedFrom = std::size_t{64} << 10;
@@ -252,13 +262,7 @@ void Derivation::apply_productions() {
       else derive_backward();
     }
   }
-  if (string_.size_bytes() > 0)
-    // Capped: a step that grew a tiny string into a big one (an axiom that
-    // sets up a whole field) says nothing about the next step, and the
-    // reservation it would ask for can exceed memory. The buffer grows by
-    // itself past the reservation.
-    growth_ = std::clamp(static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0,
-                         kMaxGrowthReserved);
+  note_growth(growth_);
   std::swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;
@@ -280,9 +284,7 @@ void Derivation::decompose() {
   const int depth = maximum_depth(RuleKind::Decomposition);
   reset_lsystems();
   if (!decompose_in_parallel(depth)) expand(RuleKind::Decomposition, current_view(), 0, depth, next_, expansion_);
-  if (string_.size_bytes() > 0)
-    decomposition_growth_ = std::clamp(
-        static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0, kMaxGrowthReserved);
+  note_growth(decomposition_growth_);
   release_deep_expansion();
   std::swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));

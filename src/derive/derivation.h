@@ -167,6 +167,8 @@ class Derivation {
   // Lets the production pass about to read string_ index its branches,
   // where its rules read context and the string is long enough to pay.
   void index_branches();
+  // Sets `growth` to how much next_ grew over string_ in the pass just run.
+  void note_growth(double& growth) const;
 
   // Why passes of `kind` run serially whatever the string, or empty.
   std::string serial_reason(abi::RuleKind kind) const;

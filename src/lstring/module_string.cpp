@@ -81,13 +81,17 @@ std::size_t grown_capacity(std::size_t current, std::size_t needed) {
 // 1.29 s to about 0.6 s; the eighth keeps what is faulted in but unused
 // small. Where the kernel cannot (before Linux 5.14) pages fault in one by
 // one, as they would anyway.
+void fault_in(unsigned char* at, std::size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  if (bytes) madvise(at, bytes, MADV_POPULATE_WRITE);
+#endif
+}
+
 std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
   const std::size_t from = b.capacity / kPage * kPage;
   const std::size_t ahead = std::max(needed, from + std::max(kMappedBuffer, from / 8));
   const std::size_t to = std::min(b.reserved, (ahead + kPage - 1) / kPage * kPage);
-#ifdef MADV_POPULATE_WRITE
-  if (to > from) madvise(b.data + from, to - from, MADV_POPULATE_WRITE);
-#endif
+  if (to > from) fault_in(b.data + from, to - from);
   return to;
 }
 
@@ -167,8 +171,7 @@ void ModuleString::reserve(std::size_t bytes) {
   if (bytes > buffer_.capacity) grow_buffer(&buffer_, bytes);
 }
 
-void ModuleString::truncate(std::size_t size) {
-  buffer_.size = size;
+void ModuleString::forget_starts_from(std::size_t size) {
   while (!known_starts_.empty() && known_starts_.back() >= size) known_starts_.pop_back();
 }
 
@@ -253,9 +256,7 @@ void PrependBuffer::grow(std::size_t needed) {
   unsigned char* data = allocate_bytes(capacity);
   // The free front will be filled before the buffer grows again: fault it in
   // at once (see populate).
-#ifdef MADV_POPULATE_WRITE
-  if (is_mapped(capacity)) madvise(data, capacity, MADV_POPULATE_WRITE);
-#endif
+  if (is_mapped(capacity)) fault_in(data, capacity);
   if (used) std::memcpy(data + capacity - used, data_ + begin_, used);
   free_bytes(data_, capacity_);
   data_ = data;

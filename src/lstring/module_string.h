@@ -86,7 +86,10 @@ class ModuleString {
     buffer_.size = 0;
     known_starts_.clear();
   }
-  void truncate(std::size_t size);
+  void truncate(std::size_t size) {  // inline: a rule that produces nothing truncates
+    buffer_.size = size;
+    if (!known_starts_.empty()) forget_starts_from(size);
+  }
   void reserve(std::size_t bytes);
   void append(const unsigned char* bytes, std::size_t n) {
     buffer_.reserve_more(n);
@@ -132,6 +135,7 @@ class ModuleString {
 
  private:
   void grow_unwritten(std::size_t bytes, std::size_t kept);
+  void forget_starts_from(std::size_t size);
 
   OwnedModuleBuffer buffer_;
   std::vector<std::size_t> known_starts_;
