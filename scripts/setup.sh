@@ -12,6 +12,7 @@ PACKAGES=(
   libgraphicsmagick1-dev                               # texture images (PNG, SGI .rgb ...)
   libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
   libcpp-httplib-dev                                   # the studio's web server
+  libsundials-dev libeigen3-dev                        # stiff integration (CVODE), linear algebra in tests
   chromium                                             # the studio's browser tests (headless)
   clang libclang-rt-14-dev                             # the sanitizer build and the fuzz targets (libFuzzer)
 )

@@ -125,6 +125,11 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
   }
 }
 
+void write_png_frame(const std::string& path, Simulation& simulation, const geometry::ViewParameters& camera,
+                     const OutputOptions& options) {
+  write_image(path, simulation.scene(), simulation, camera, options);
+}
+
 std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation) {
   const io::ViewFile& view = view_file_or_default(simulation);
   const geometry::TriangleMesh mesh =

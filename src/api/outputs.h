@@ -6,6 +6,7 @@
 #include <string>
 
 #include "api/simulation.h"
+#include "geometry/camera.h"
 
 namespace sylva {
 
@@ -25,6 +26,10 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
 // the view file draws it: its line style (pixel lines as glTF lines) and
 // contour sides, rather than as a mesh file exports it. What a viewer shows.
 std::string scene_glb(const geometry::Scene& scene, const Simulation& simulation);
+
+// A PNG of the current string drawn by the turtle, seen by `camera`.
+void write_png_frame(const std::string& path, Simulation& simulation, const geometry::ViewParameters& camera,
+                     const OutputOptions& options);
 
 // Runs the derivation again from the axiom and writes one PNG per frame of
 // the animation file (every step when there is none) into `dir` as

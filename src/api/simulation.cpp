@@ -6,6 +6,7 @@
 #include <thread>
 #include <cstdio>
 
+#include "api/derivation_system.h"
 #include "api/environment_pass.h"
 #include "api/input_queries.h"
 #include "api/model_requests.h"
@@ -227,6 +228,7 @@ RunBudget::Scope Simulation::drawing() {
 void Simulation::rewind() {
   begun_ = false;
   finished_ = false;
+  continuous_run_.reset();
 }
 
 void Simulation::start_from(const ModuleString& string) { derivation_->set_initial_string(string); }

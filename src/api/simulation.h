@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "build/model_builder.h"
+#include "continuous/continuous_run.h"
 #include "env/field.h"
 #include "geometry/scene.h"
 #include "inputs/input_files.h"
@@ -122,6 +123,24 @@ class Simulation {
   // string, which is not decomposed again). Takes effect at the next begin().
   void start_from(const ModuleString& string);
 
+  // ---- continuous time: differential L-systems (docs/continuous-time.md)
+  // Whether the model has derivative or event rules.
+  bool continuous() const;
+  // How the state is integrated and events located; before the run begins.
+  // `settings.end_time` bounds the integrator's steps, so that the steps (and
+  // the events) do not depend on the times asked for.
+  void set_continuous_settings(const continuous::ContinuousSettings& settings) { continuous_settings_ = settings; }
+  // Integrates the state to time `t` (>= time()), firing the events on the
+  // way, after begin() if the run has not begun (at t = 0). Throws
+  // ModelError where the integration fails or events never settle.
+  void advance_to(double t);
+  double time() const;
+  // Events fired, integrator steps and right-hand side evaluations so far.
+  struct ContinuousCounts {
+    std::size_t events = 0, steps = 0, evaluations = 0, location_probes = 0;
+  };
+  ContinuousCounts continuous_counts() const;
+
   // ---- where the run is
   bool begun() const { return begun_; }
   bool finished() const { return finished_; }
@@ -215,6 +234,10 @@ class Simulation {
   // The environment, when the model has one.
   std::shared_ptr<env::Field> field_;
   std::unique_ptr<EnvironmentPass> environment_pass_;
+  continuous::ContinuousSettings continuous_settings_;
+  class DerivationSystem;  // the derivation as the scheduler sees it (simulation_continuous.cpp)
+  std::unique_ptr<DerivationSystem> continuous_system_;
+  std::unique_ptr<continuous::ContinuousRun> continuous_run_;
   bool compiled_now_ = false;
 
   bool begun_ = false;

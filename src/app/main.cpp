@@ -16,6 +16,7 @@
 
 #include "api/outputs.h"
 #include "api/reference_command_line.h"
+#include "api/timed_run.h"
 #include "api/simulation.h"
 #include "api/verify_string.h"
 #include "app/cache_command.h"
@@ -89,7 +90,48 @@ struct RunOptions {
   bool explain_parallel = false;
   bool keyed_random = false;
   sylva::RunLimits limits = sylva::default_run_limits();
+  // Continuous time (docs/continuous-time.md): --time switches the run to it.
+  sylva::TimedRunOptions timed;
+  std::string integrator = "rk45";
+  sylva::continuous::ContinuousSettings continuous;
 };
+
+// The options of a run in continuous time.
+void add_time_options(CLI::App& run, RunOptions& r) {
+  const sylva::continuous::ContinuousSettings defaults;
+  run.add_option("--time", r.timed.end_time,
+                 "Run a differential L-system in continuous time up to T (instead of steps); the outputs show "
+                 "the state at T")
+      ->check(CLI::PositiveNumber)
+      ->type_name("T");
+  run.add_option("--dt", r.timed.dt,
+                 "With --time: sample the state at 0, DT, 2 DT ... for --record and --frames (independent of "
+                 "the events' times)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("DT");
+  run.add_option("--integrator", r.integrator,
+                 "rk4 (fixed step), rk45 (adaptive Dormand-Prince, the default) or cvode (stiff systems)")
+      ->check(CLI::IsMember({"rk4", "rk45", "cvode"}))
+      ->type_name("METHOD");
+  run.add_option("--step", r.continuous.integrator.step,
+                 "rk4's step; the first step the adaptive methods try (default " +
+                     std::to_string(defaults.integrator.step) + ")")
+      ->check(CLI::PositiveNumber);
+  run.add_option("--tolerance", r.continuous.integrator.relative_tolerance,
+                 "Relative error allowed per step of rk45 and cvode (default 1e-6)")
+      ->check(CLI::PositiveNumber);
+  run.add_option("--event-tolerance", r.continuous.event_tolerance,
+                 "Events are placed within this much time after they happen (default 1e-9)")
+      ->check(CLI::PositiveNumber);
+  run.add_option("--record", r.timed.record,
+                 "With --time: record the parameters of the modules named NAME at every sample (repeatable)")
+      ->type_name("NAME");
+  run.add_option("--record-file", r.timed.record_path,
+                 "Where --record writes its CSV (t,index,module,parameter,value; default standard output)")
+      ->type_name("FILE");
+  run.add_option("--plot", r.timed.plot_path, "With --record: a PNG of the recorded parameters against time")
+      ->type_name("FILE");
+}
 
 // VerifyString: (LPFG manual 10.4). On a mismatch lpfg's two files of module
 // names, Verify_MODEL_expected.txt and Verify_MODEL_actual.txt, are written in
@@ -137,11 +179,26 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   simulation.set_output_options(r.output);
   if (!r.axiom_from.empty())
     simulation.start_from(sylva::io::read_string_file(r.axiom_from, simulation.types()));
-  if (!r.frames_dir.empty()) {
+  const bool in_time = r.timed.end_time > 0;
+  if (in_time) {
+    sylva::TimedRunOptions timed = r.timed;
+    timed.frames_dir = r.frames_dir;
+    if (!timed.record.empty() && timed.record_path.empty()) timed.record_path = "-";
+    sylva::continuous::ContinuousSettings settings = r.continuous;
+    settings.integrator.method = sylva::continuous::method_named(r.integrator);
+    settings.end_time = timed.end_time;
+    simulation.set_continuous_settings(settings);
+    sylva::run_in_time(simulation, timed, r.output);
+    if (o.build.verbose) {
+      const auto counts = simulation.continuous_counts();
+      std::fprintf(stderr, "sylva: t = %g: %zu events, %zu integrator steps, %zu evaluations, %zu location probes\n",
+                   simulation.time(), counts.events, counts.steps, counts.evaluations, counts.location_probes);
+    }
+  } else if (!r.frames_dir.empty()) {
     const int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
     if (o.build.verbose) std::fprintf(stderr, "sylva: wrote %d frames to %s\n", frames, r.frames_dir.c_str());
   }
-  simulation.run(r.steps);  // frames that ended on the final step leave it in place
+  if (!in_time) simulation.run(r.steps);  // frames that ended on the final step leave it in place
   if (!check_verify_string(simulation, r.model)) return 1;
   // As the first view draws it.
   if (!r.interpreted_path.empty())
@@ -150,7 +207,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     sylva::io::write_output_file(r.turtle_path, simulation.turtle_trace(simulation.primary_view()));
   simulation.write(r.outputs);
   const bool other_output = !r.interpreted_path.empty() || !r.turtle_path.empty() || !r.outputs.empty() ||
-                            !r.frames_dir.empty();
+                            !r.frames_dir.empty() || !r.timed.record.empty() || !r.timed.plot_path.empty();
   if (r.string_path == kNoString) return 0;
   if (!r.string_path.empty() || !other_output) {
     const std::string path = r.string_path.empty() ? "-" : r.string_path;
@@ -243,6 +300,7 @@ int main(int argc, char** argv) {
           },
           "NONNEGATIVE"));
   add_limit_options(*run, r.limits);
+  add_time_options(*run, r);
   run->add_flag("--huge-pages", r.huge_pages,
                 "Keep large strings in transparent huge pages: faster where the system has free huge pages at "
                 "hand, slower on virtual machines that return free memory to their host (docs/performance.md)");

@@ -42,7 +42,8 @@ bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rul
 
 // Where a call into the model is, for a fault there.
 model_faults::CallSite site_of(const abi::Rule& rule, int step) {
-  static constexpr const char* kKinds[] = {"production", "decomposition rule", "interpretation rule"};
+  static constexpr const char* kKinds[] = {"production", "decomposition rule", "interpretation rule",
+                                           "derivative rule", "event"};
   const auto kind = static_cast<std::size_t>(rule.kind);
   return {kind < std::size(kKinds) ? kKinds[kind] : "rule", rule.file, rule.line, step};
 }
@@ -51,12 +52,6 @@ model_faults::CallSite site_of(const abi::ModelDescriptor& model, const char* st
   return {statement, model.source_file, 0, model.control->step};
 }
 
-// Marks a pass that applies rules: the string it reads must not be replaced.
-struct PassGuard {
-  int& count;
-  explicit PassGuard(int& c) : count(c) { ++count; }
-  ~PassGuard() { --count; }
-};
 
 }  // namespace
 
@@ -425,8 +420,18 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
     in_body.set_new_left(built, built.size_bytes(), types_.encoded_sizes(), new_left, built_branches);
   in_body.attach(call);
   if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
+  call.rates = rates_.data();
+  call.event_probe = probing_events_;
   keyed_random::at_module(pos);
   model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
+  // A derivative rule, or an event rule asked for its condition: it applies
+  // where it matches, and produces nothing.
+  if (rule.kind == RuleKind::Derivative || call.event_probe) {
+    event_reading_ = {call.event_holds, call.event_margin};
+    out.truncate(mark);
+    *consumed = at;
+    return true;
+  }
   if (!call.produced) {
     out.truncate(mark);  // no produce: the rule did not apply, and nproduce'd modules go
     return false;

@@ -9,9 +9,11 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "continuous/continuous_run.h"
 #include "derive/gillespie.h"
 #include "derive/parameter_writes.h"
 #include "derive/rule_index.h"
@@ -120,6 +122,25 @@ class Derivation {
   void track_births(bool on) { tracking_births_ = on; }
   const std::vector<std::uint32_t>& births() const { return births_; }
 
+  // ---- continuous time: differential L-systems (continuous_passes.cpp,
+  // docs/continuous-time.md). Only between derivation passes.
+  // Whether the model has derivative or event rules.
+  bool has_continuous_rules() const;
+  // The state: the float and double parameters of every module that has a
+  // derivative rule, in string order. The order holds until the string changes.
+  void gather_state(std::vector<double>& y);
+  // Sets the time (CurrentTime()) and writes `y` into those parameters.
+  void scatter_state(double t, std::span<const double> y);
+  // The rates of change of the state: each module's first derivative rule
+  // whose context matches writes them; a parameter without one stays put.
+  void evaluate_rates(std::span<double> dy);
+  // For each module, each of its event rules whose context matches: whether
+  // its condition holds and its margin.
+  void read_events(std::vector<continuous::EventReading>& readings);
+  // One pass of event rules: each module whose first holding event rule
+  // applies is replaced by its successor; then decomposition.
+  void fire_events();
+
   // ---- parallel passes (parallel_derivation.cpp)
   // Passes run on up to `threads` threads wherever the result cannot differ
   // from a serial pass's; 1: every pass is serial. A thread takes at least
@@ -137,6 +158,12 @@ class Derivation {
   std::string parallel_explanation() const;
 
  private:
+  // Marks a pass that applies rules: the string it reads must not be replaced.
+  struct PassGuard {
+    int& count;
+    explicit PassGuard(int& c) : count(c) { ++count; }
+    ~PassGuard() { --count; }
+  };
   // A stretch of the old string [source_begin, source_end) replaced by
   // `output_bytes` bytes of the new one, in the order of the old string.
   struct Rewrite {
@@ -246,6 +273,25 @@ class Derivation {
   int maximum_depth(abi::RuleKind kind) const;
   void warn_depth_reached(abi::RuleKind kind, ModuleId id, int max_depth);
   void message(const std::string& text) const;
+
+  // Where the state lies in string_ (continuous_passes.cpp): the modules
+  // with derivative rules and their continuous parameters' bytes; the
+  // modules with event rules.
+  struct StateSlot {
+    std::size_t offset;  // in string_'s bytes
+    bool is_double;
+  };
+  struct StateModule {
+    std::size_t pos;
+    std::uint32_t first_slot, slots;
+  };
+  void map_state();
+  std::vector<StateSlot> state_slots_;
+  std::vector<StateModule> state_modules_;
+  std::vector<std::size_t> event_modules_;
+  std::vector<double> rates_;  // a derivative rule's d(p), by parameter index
+  bool probing_events_ = false;
+  continuous::EventReading event_reading_{};  // what the probed event rule said
 
   const abi::ModelDescriptor& model_;
   ModuleTypes types_;

@@ -3,7 +3,7 @@
 namespace sylva::derive {
 
 RuleIndex::RuleIndex(const abi::ModelDescriptor& model) {
-  for (int kind = 0; kind < 3; ++kind) {
+  for (int kind = 0; kind < abi::kRuleKinds; ++kind) {
     forward_[kind].resize(model.module_count);
     backward_[kind].resize(model.module_count);
   }

@@ -26,9 +26,9 @@ class RuleIndex {
   bool has_rules(abi::RuleKind kind) const { return count_[static_cast<int>(kind)] > 0; }
 
  private:
-  std::vector<std::vector<std::uint32_t>> forward_[3];
-  std::vector<std::vector<std::uint32_t>> backward_[3];
-  std::size_t count_[3] = {0, 0, 0};
+  std::vector<std::vector<std::uint32_t>> forward_[abi::kRuleKinds];
+  std::vector<std::vector<std::uint32_t>> backward_[abi::kRuleKinds];
+  std::size_t count_[abi::kRuleKinds] = {};
 };
 
 }  // namespace sylva::derive

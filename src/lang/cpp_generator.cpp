@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "lang/constant_modules.h"
+#include "lang/event_margin.h"
 #include "lang/mapped_writer.h"
 #include "lang/parallel_safety.h"
 
@@ -16,6 +17,8 @@ const char* kind_name(abi::RuleKind kind) {
     case abi::RuleKind::Production: return "::sylva::abi::RuleKind::Production";
     case abi::RuleKind::Decomposition: return "::sylva::abi::RuleKind::Decomposition";
     case abi::RuleKind::Interpretation: return "::sylva::abi::RuleKind::Interpretation";
+    case abi::RuleKind::Derivative: return "::sylva::abi::RuleKind::Derivative";
+    case abi::RuleKind::Event: return "::sylva::abi::RuleKind::Event";
   }
   return "";
 }
@@ -169,8 +172,30 @@ class CppGenerator {
       }
     }
     out_.at(rule.at, text);
+    if (rule.kind == abi::RuleKind::Event) emit_event_condition(rule.event_condition);
+    if (rule.kind == abi::RuleKind::Derivative)
+      rate_types_ = join_types(module(rule.parts[abi::kStrict].front().name).param_types);
     emit_body(rule.body);
     out_.inline_text("}");
+  }
+
+  // An event's body first tells the engine whether its condition holds and
+  // by how much (lang/event_margin.h); probed, or where it does not hold, it
+  // stops there.
+  void emit_event_condition(const Code& condition) {
+    out_.at(condition.front(), "sylva_call->event_margin = ");
+    for (const MarginPiece& piece : event_margin(condition)) {
+      if (const auto* literal = std::get_if<std::string>(&piece)) {
+        out_.inline_text(*literal);
+        continue;
+      }
+      const TokenRun run = std::get<TokenRun>(piece);
+      out_.tokens(Code(condition.begin() + static_cast<std::ptrdiff_t>(run.begin),
+                       condition.begin() + static_cast<std::ptrdiff_t>(run.end)));
+    }
+    out_.inline_text("; sylva_call->event_holds = static_cast<bool>(");
+    out_.tokens(condition);
+    out_.inline_text("); if (sylva_call->event_probe || !sylva_call->event_holds) return;");
   }
 
   void emit_body(const Body& body) {
@@ -185,6 +210,13 @@ class CppGenerator {
       }
       if (part.kind == BodyPart::kInContext) {
         emit_in_context(part);
+        continue;
+      }
+      if (part.kind == BodyPart::kRate) {
+        out_.at(part.at, "::sylva::rt::set_rate<" + std::to_string(part.rate_index) + ", " + rate_types_ +
+                             ">(sylva_call, static_cast<double>(");
+        out_.tokens(part.code);
+        out_.inline_text("));");
         continue;
       }
       out_.at(part.at, "{");
@@ -430,6 +462,7 @@ class CppGenerator {
   MappedWriter out_;
   std::unordered_map<std::string, int> module_id_;
   std::vector<const Rule*> rules_;
+  std::string rate_types_;  // the parameter types of the derivative rule being written
   std::string settings_[4];
   std::string control_[4];
   bool has_axiom_ = false;

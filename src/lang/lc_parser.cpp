@@ -69,9 +69,12 @@ bool LcParser::parse_construct() {
     if (w == "production" || w == "productions") return switch_block(RuleKind::Production), true;
     if (w == "decomposition") return switch_block(RuleKind::Decomposition), true;
     if (w == "interpretation" || w == "homomorphism") return switch_block(RuleKind::Interpretation), true;
+    if (w == "derivatives") return switch_block(RuleKind::Derivative), true;
+    if (w == "events") return switch_block(RuleKind::Event), true;
   }
   if (w == "maximum" && peek(1).is_ident("depth") && followed_by_colon(2)) {
-    if (block_ == RuleKind::Production) fail(tok, "'maximum depth:' belongs in a decomposition: or interpretation: block");
+    if (block_ != RuleKind::Decomposition && block_ != RuleKind::Interpretation)
+      fail(tok, "'maximum depth:' belongs in a decomposition: or interpretation: block");
     return parse_setting(block_ == RuleKind::Decomposition ? Setting::kDecompositionDepth
                                                            : Setting::kInterpretationDepth,
                          3),

@@ -120,6 +120,10 @@ class LcParser {
   bool in_context_test_ahead() const;
   static std::string in_context_misplaced(const Token& tok);
   BodyPart parse_in_context();
+  Code parse_event_condition();
+  bool rate_statement_ahead() const;
+  BodyPart parse_rate();
+  void resolve_rates(Rule& rule);
 
   const TokenStream& stream_;
   const std::vector<Token>& t_;
@@ -128,6 +132,7 @@ class LcParser {
   Code code_;
   std::unordered_map<std::string, int> module_index_;
   RuleKind block_ = RuleKind::Production;
+  bool in_derivative_rule_ = false;  // its body's `d(x) = ...;` are rates
   int group_ = 0;
   bool gillespie_ = false;  // group_ is a Gillespie group
   int view_ = 0;

@@ -1,6 +1,7 @@
 // The rule half of the L+C parser: rules and their predecessors, bodies
 // (produce, nproduce and propensity statements, in-body context tests), and
 // the module lists and argument lists that bodies and the axiom contain.
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <unordered_set>
@@ -36,6 +37,7 @@ void LcParser::parse_rule() {
   }
   if (segments.back().empty()) fail(peek(), "expected a module before ':'");
   next();  // :
+  if (block_ == RuleKind::Event) rule.event_condition = parse_event_condition();
 
   const bool gillespie = gillespie_ && block_ == RuleKind::Production;
   for (const Token& op : operators)
@@ -66,9 +68,81 @@ void LcParser::parse_rule() {
         if (!bound.insert(m.formals[f]).second)
           fail(m.at, "parameter name '" + m.formals[f] + "' is bound twice in the predecessor");
 
-  rule.body = parse_body(true, gillespie);
+  in_derivative_rule_ = block_ == RuleKind::Derivative;
+  rule.body = parse_body(!in_derivative_rule_, gillespie);
+  in_derivative_rule_ = false;
   if (peek().is_punct(";")) next();
+  if (block_ == RuleKind::Derivative) resolve_rates(rule);
   model_.items.emplace_back(std::move(rule));
+}
+
+// ---- differential L-systems (docs/continuous-time.md) -----------------------
+// `when ( condition )` after the ':' of an event.
+Code LcParser::parse_event_condition() {
+  if (!peek().is_ident("when") || !peek(1).is_punct("("))
+    fail(peek(), "expected 'when (condition)' after ':' in an event, found " + describe(peek()));
+  next();
+  const Token& opening = next();
+  Code condition;
+  int depth = 0;
+  while (depth > 0 || !peek().is_punct(")")) {
+    const Token& tok = peek();
+    if (tok.kind == TokenKind::End || tok.kind == TokenKind::Verbatim || (depth == 0 && tok.is_punct(";")))
+      fail(opening, "expected ')' to close the condition that begins here, found " + describe(tok));
+    if (is_open(tok)) ++depth;
+    if (is_close(tok)) --depth;
+    condition.push_back(next());
+  }
+  if (condition.empty()) fail(peek(), "expected a condition in 'when ( )'");
+  next();  // )
+  return condition;
+}
+
+// `d(x) = ` begins a rate statement in a derivative rule's body.
+bool LcParser::rate_statement_ahead() const {
+  return peek().is_ident("d") && peek(1).is_punct("(") && peek(2).is_ident() && peek(3).is_punct(")") &&
+         peek(4).is_punct("=");
+}
+
+// `d(x) = expression;`
+BodyPart LcParser::parse_rate() {
+  BodyPart rate;
+  rate.kind = BodyPart::kRate;
+  rate.at = next();  // d
+  next();            // (
+  rate.rate_of = next().text;
+  next();  // )
+  next();  // =
+  int depth = 0;
+  while (depth > 0 || !peek().is_punct(";")) {
+    const Token& tok = peek();
+    if (tok.kind == TokenKind::End || tok.kind == TokenKind::Verbatim || (depth == 0 && is_close(tok)))
+      fail(tok, "expected ';' to end 'd(" + rate.rate_of + ") = ...', found " + describe(tok));
+    if (is_open(tok)) ++depth;
+    if (is_close(tok)) --depth;
+    rate.code.push_back(next());
+  }
+  if (rate.code.empty()) fail(peek(), "expected the rate of '" + rate.rate_of + "' after 'd(" + rate.rate_of + ") ='");
+  next();  // ;
+  return rate;
+}
+
+// The equations of a derivative rule are for the parameters of its one
+// strict predecessor module.
+void LcParser::resolve_rates(Rule& rule) {
+  const std::vector<PatternModule>& strict = rule.parts[abi::kStrict];
+  if (strict.size() != 1)
+    fail(strict.size() > 1 ? strict[1].at : rule.at,
+         "a derivative rule gives the rates of one module: its strict predecessor must be a single module");
+  const PatternModule& m = strict.front();
+  for (BodyPart& part : rule.body) {
+    if (part.kind != BodyPart::kRate) continue;
+    const auto formal = std::find(m.formals.begin(), m.formals.end(), part.rate_of);
+    if (formal == m.formals.end())
+      fail(part.at, "an equation for '" + part.rate_of + "', which is not a parameter of " + m.name +
+                        ", the module this derivative rule is for");
+    part.rate_index = static_cast<int>(formal - m.formals.begin());
+  }
 }
 
 PatternModule LcParser::parse_pattern_module() {
@@ -209,7 +283,16 @@ Body LcParser::parse_body(bool produce_allowed, bool gillespie) {
       body.push_back(parse_in_context());
       continue;
     }
+    if (in_derivative_rule_ && rate_statement_ahead()) {
+      if (!code.code.empty()) body.push_back(std::move(code));
+      code = BodyPart{};
+      body.push_back(parse_rate());
+      continue;
+    }
     if (tok.is_ident("produce") || tok.is_ident("nproduce")) {
+      if (in_derivative_rule_)
+        fail(tok, "a derivative rule gives rates ('d(x) = ...;'), not a successor: productions at an instant "
+                  "belong in an events: block");
       if (!produce_allowed) fail(tok, "'" + tok.text + "' is only allowed in a production or rule body");
       if (gillespie && tok.is_ident("produce"))
         fail(tok, "a production of a Gillespie group produces through its reactions: write "

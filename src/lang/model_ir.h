@@ -49,11 +49,15 @@ struct BodyPart {
   // kInContext: `InLeftContext(A(x) B(y))` and its kin (LPFG manual 3.3),
   // an expression testing context; `modules` is the pattern, each argument
   // the variable its parameter is copied into.
-  enum Kind { kCode, kProduce, kNProduce, kPropensity, kInContext } kind = kCode;
-  Code code;                        // kCode; kPropensity: the propensity
+  // kRate: `d(x) = <code>;` in a derivative rule, the rate of the strict
+  // predecessor's parameter number `rate_index` (named `rate_of`).
+  enum Kind { kCode, kProduce, kNProduce, kPropensity, kInContext, kRate } kind = kCode;
+  Code code;                        // kCode; kPropensity: the propensity; kRate: the rate
   std::vector<ModuleCall> modules;  // kProduce, kNProduce, kPropensity, kInContext
   Token at;
   abi::PatternPart context = abi::kLeft;  // kInContext: which context it tests
+  std::string rate_of;                    // kRate
+  int rate_index = -1;                    // kRate
 };
 using Body = std::vector<BodyPart>;
 
@@ -65,6 +69,8 @@ struct Rule {
   std::array<std::vector<PatternModule>, abi::kPatternParts> parts;
   Body body;
   Token at;
+  // An event (RuleKind::Event): `when (condition)`, the instant it becomes true.
+  Code event_condition;
 };
 
 struct Axiom {

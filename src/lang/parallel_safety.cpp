@@ -506,6 +506,7 @@ class Analysis {
       switch (part.kind) {
         case BodyPart::kCode:
         case BodyPart::kPropensity:
+        case BodyPart::kRate:
           why = code_reason(part.code, scopes, pending);
           break;
         case BodyPart::kProduce:

@@ -1,4 +1,4 @@
-// The cairo plugin (cairo_plugin.h): a Drawing as PDF or PostScript.
+// The cairo plugin (cairo_plugin.h): a Drawing as PDF, PostScript or PNG.
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
 #include <cairo.h>
@@ -73,10 +73,27 @@ void cairo_shape(cairo_t* cr, const Shape& s, const Drawing& d) {
   }
 }
 
+using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+// Every format draws the same way, so a plot looks alike in all of them.
+cairo_status_t draw(cairo_t* cr, const Drawing& d) {
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_select_font_face(cr, "Courier", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, d.font_size);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_set_source_rgb(cr, d.background.r, d.background.g, d.background.b);
+  cairo_paint(cr);
+  for (const Shape& s : d.shapes) cairo_shape(cr, s, d);
+  return cairo_status(cr);
+}
+
+[[noreturn]] void cannot_draw(const std::string& path, cairo_status_t status) {
+  throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot draw the file: ") + cairo_status_to_string(status));
+}
+
 std::string cairo_document(const Drawing& d, DrawingFormat format, const std::string& path) {
   std::string out;
-  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-  using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
   Surface surface(format == DrawingFormat::Pdf
                       ? cairo_pdf_surface_create_for_stream(append_to_string, &out, d.width, d.height)
                       : cairo_ps_surface_create_for_stream(append_to_string, &out, d.width, d.height),
@@ -85,26 +102,41 @@ std::string cairo_document(const Drawing& d, DrawingFormat format, const std::st
   if (format == DrawingFormat::Eps) cairo_ps_surface_set_eps(surface.get(), 1);
   {
     Context cr(cairo_create(surface.get()), cairo_destroy);
-    cairo_set_line_join(cr.get(), CAIRO_LINE_JOIN_ROUND);
-    cairo_select_font_face(cr.get(), "Courier", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    cairo_set_font_size(cr.get(), d.font_size);
-    cairo_set_fill_rule(cr.get(), CAIRO_FILL_RULE_EVEN_ODD);
-    cairo_set_source_rgb(cr.get(), d.background.r, d.background.g, d.background.b);
-    cairo_paint(cr.get());
-    for (const Shape& s : d.shapes) cairo_shape(cr.get(), s, d);
+    draw(cr.get(), d);
     cairo_show_page(cr.get());
   }
   cairo_surface_finish(surface.get());
   cairo_status_t status = cairo_surface_status(surface.get());
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw ModelError(SourceLocation{path, 0, 0}, std::string("cannot draw the file: ") + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS) cannot_draw(path, status);
+  return out;
+}
+
+std::string cairo_png(const Drawing& d, const std::string& path) {
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height), cairo_surface_destroy);
+  cairo_status_t status = cairo_surface_status(surface.get());
+  if (status != CAIRO_STATUS_SUCCESS) cannot_draw(path, status);
+  {
+    Context cr(cairo_create(surface.get()), cairo_destroy);
+    // Grey antialiasing: subpixel text (fontconfig's choice on some machines)
+    // would fringe text with colours, and in a plot colours name the series.
+    std::unique_ptr<cairo_font_options_t, decltype(&cairo_font_options_destroy)> options(cairo_font_options_create(),
+                                                                                          cairo_font_options_destroy);
+    cairo_font_options_set_antialias(options.get(), CAIRO_ANTIALIAS_GRAY);
+    cairo_set_font_options(cr.get(), options.get());
+    status = draw(cr.get(), d);
+  }
+  cairo_surface_flush(surface.get());
+  std::string out;
+  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
+  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_write_to_png_stream(surface.get(), append_to_string, &out);
+  if (status != CAIRO_STATUS_SUCCESS) cannot_draw(path, status);
   return out;
 }
 
 class CairoPrinter final : public VectorPrinter {
  public:
   std::string document(const Drawing& drawing, DrawingFormat format, const std::string& path) override {
-    return cairo_document(drawing, format, path);
+    return format == DrawingFormat::Png ? cairo_png(drawing, path) : cairo_document(drawing, format, path);
   }
 };
 

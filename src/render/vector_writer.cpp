@@ -144,8 +144,8 @@ std::string svg_document(const Drawing& d, const ModuleTypes* types) {
 }
 
 VectorPrinter& printer() {
-  static VectorPrinter& plugin =
-      plugin_object<VectorPrinter>("libsylva_cairo.so", "sylva_vector_printer", "writes PDF and PostScript drawings");
+  static VectorPrinter& plugin = plugin_object<VectorPrinter>("libsylva_cairo.so", "sylva_vector_printer",
+                                                              "writes PDF and PostScript drawings and PNG plots");
   return plugin;
 }
 
@@ -171,6 +171,10 @@ void write_vector_drawing(const std::string& path, const geometry::Scene& scene,
   const Drawing drawing = project_scene(scene, palette, view, line_style, width, height, cap);
   write_output_file(path, format == DrawingFormat::Svg ? svg_document(drawing, types)
                                                       : printer().document(drawing, format, path));
+}
+
+std::string drawing_png(const Drawing& drawing, const std::string& path) {
+  return printer().document(drawing, DrawingFormat::Png, path);
 }
 
 }  // namespace sylva::io

@@ -29,4 +29,11 @@ void write_vector_drawing(const std::string& path, const geometry::Scene& scene,
                           const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
                           const ModuleTypes* types = nullptr, int ps_linecap = 1);
 
+struct Drawing;
+
+// `drawing` as the bytes of a PNG file, drawn by cairo in its plugin like PDF
+// and PostScript (one drawing pixel is one image pixel). `path` names the file
+// in errors; nothing is written.
+std::string drawing_png(const Drawing& drawing, const std::string& path);
+
 }  // namespace sylva::io

@@ -57,5 +57,6 @@ enum __lc_GroupType { __lc_gtUnspecified, __lc_gtLsystem, __lc_gtGillespie };
 #include <sylva/runtime/input_functions.h>
 #include <sylva/runtime/interaction.h>
 #include <sylva/runtime/in_context.h>
+#include <sylva/runtime/continuous.h>
 
 #endif  // __LPFGALL_H__

@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 12;
+inline constexpr std::uint32_t kAbiVersion = 13;
 
 using ModuleId = std::uint16_t;
 
@@ -113,7 +113,12 @@ struct ModuleType {
   const ParamField* params;
 };
 
-enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2 };
+// Derivative and Event rules belong to differential L-systems
+// (docs/continuous-time.md): a Derivative rule gives the rates of change of
+// its module's parameters, an Event rule the production applied at the
+// instant its condition becomes true.
+enum class RuleKind : std::uint8_t { Production = 0, Decomposition = 1, Interpretation = 2, Derivative = 3, Event = 4 };
+inline constexpr int kRuleKinds = 5;
 
 // Pattern parts in the order the engine hands their parameters to a body.
 enum PatternPart : int { kNewLeft = 0, kLeft, kStrict, kRight, kNewRight, kPatternParts };
@@ -135,6 +140,16 @@ struct RuleCall {
   // parameters of the module matched by pattern[k]. Null: every test is false.
   void* context = nullptr;
   bool (*in_context)(void* context, int part, const ModuleId* pattern, int n, const unsigned char** params) = nullptr;
+  // A Derivative rule writes d(p) of its module's parameter p at rates[p]
+  // (by parameter index); the engine zeroes them first.
+  double* rates = nullptr;
+  // An Event rule sets whether its condition holds and its margin: a number
+  // that is >= 0 where the condition holds and crosses zero where it starts
+  // to (x - xmax for `x >= xmax`), so the engine can locate the instant.
+  // With event_probe set the body stops there and produces nothing.
+  bool event_probe = false;
+  bool event_holds = false;
+  double event_margin = 0;
 };
 
 struct Rule {
@@ -195,6 +210,9 @@ struct ControlState {
   // line), so a group the model lacks can be reported there.
   const char* group_call_file = nullptr;
   int group_call_line = 0;
+  // The time of a continuous run (Time() in a model): where the equations
+  // are evaluated, or the instant an event fires.
+  double time = 0;
   // A cpfg model's stochastic productions are chosen from its seed: as
   // cpfg's window seeds drand48 (seed48({seed, 0, 155})); false: as cpfg's
   // batch runs (-g), which never seed it (state 0).
