@@ -117,6 +117,10 @@ void add_time_options(CLI::App& run, RunOptions& r) {
                  "rk4's step; the first step the adaptive methods try (default " +
                      std::to_string(defaults.integrator.step) + ")")
       ->check(CLI::PositiveNumber);
+  run.add_option("--max-step", r.continuous.integrator.max_step,
+                 "The longest step rk45 and cvode may take (default: no limit); events are looked for at the "
+                 "ends of steps, so a condition true only briefly needs steps shorter than that")
+      ->check(CLI::PositiveNumber);
   run.add_option("--tolerance", r.continuous.integrator.relative_tolerance,
                  "Relative error allowed per step of rk45 and cvode (default 1e-6)")
       ->check(CLI::PositiveNumber);

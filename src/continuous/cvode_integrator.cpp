@@ -6,6 +6,7 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
@@ -140,6 +141,9 @@ class Cvode final : public Integrator {
   std::size_t evaluations() const override { return evaluations_; }
 
  private:
+  // Systems up to this size use a dense Jacobian (at most 1.9 MB).
+  static constexpr sunindextype kLargestDenseSystem = 500;
+
   void create(double t) {
     const auto n = static_cast<sunindextype>(n_);
     memory_.reset(CVodeCreate(CV_BDF, context_.get()));
@@ -151,6 +155,15 @@ class Cvode final : public Integrator {
     check(CVodeSStolerances(memory, settings_.relative_tolerance, settings_.absolute_tolerance), "CVodeSStolerances");
     check(CVodeSetInitStep(memory, settings_.step), "CVodeSetInitStep");
     if (settings_.max_step > 0) check(CVodeSetMaxStep(memory, settings_.max_step), "CVodeSetMaxStep");
+    if (n > kLargestDenseSystem) {
+      // A dense Jacobian grows as n^2 (80 GB for a filament of 10^5 cells):
+      // large systems solve Newton's equations by GMRES on Jacobian-vector
+      // products, which CVODE approximates by differences of f.
+      solver_.reset(SUNLinSol_SPGMR(y_.get(), SUN_PREC_NONE, 0, context_.get()));
+      if (!solver_) throw std::runtime_error("cannot create CVODE's linear solver");
+      check(CVodeSetLinearSolver(memory, solver_.get(), nullptr), "CVodeSetLinearSolver");
+      return;
+    }
     matrix_.reset(SUNDenseMatrix(n, n, context_.get()));
     if (!matrix_) throw std::runtime_error("cannot allocate CVODE's Jacobian matrix");
     solver_.reset(SUNLinSol_Dense(y_.get(), matrix_.get(), context_.get()));

@@ -14,12 +14,15 @@ class MarginBuilder {
     while (wrapped_in_parentheses(b, e)) ++b, --e;
     if (const std::size_t at = top_level(b, e, {"||"}); at != e) return combine("::std::max", b, at, e);
     if (const std::size_t at = top_level(b, e, {"&&"}); at != e) return combine("::std::min", b, at, e);
-    if (const std::size_t at = top_level(b, e, {">=", ">", "<=", "<"}); at != e && at != b && at + 1 != e) {
+    // One comparison alone: with several (`<` of a template argument, a
+    // chain) or a `?:` the margin would not be what the condition says.
+    if (const std::size_t at = top_level(b, e, {">=", ">", "<=", "<"});
+        at != e && at != b && at + 1 != e && count_top_level(b, e, {">=", ">", "<=", "<", "?"}) == 1) {
       const bool greater = c_[at].text[0] == '>';
       difference(greater ? TokenRun{b, at} : TokenRun{at + 1, e}, greater ? TokenRun{at + 1, e} : TokenRun{b, at});
       return;
     }
-    out.emplace_back(std::string("((") );
+    out.emplace_back(std::string("(("));
     out.emplace_back(TokenRun{b, e});
     out.emplace_back(std::string(") ? 1.0 : -1.0)"));
   }
@@ -50,6 +53,19 @@ class MarginBuilder {
         if (c_[k].is_punct(op)) found = k;
     }
     return found;
+  }
+
+  std::size_t count_top_level(std::size_t b, std::size_t e, std::initializer_list<const char*> ops) const {
+    int depth = 0;
+    std::size_t count = 0;
+    for (std::size_t k = b; k < e; ++k) {
+      if (opens(c_[k])) ++depth;
+      if (closes(c_[k])) --depth;
+      if (depth != 0) continue;
+      for (const char* op : ops)
+        if (c_[k].is_punct(op)) ++count;
+    }
+    return count;
   }
 
   void combine(const char* function, std::size_t b, std::size_t at, std::size_t e) {

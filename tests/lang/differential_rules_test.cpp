@@ -63,6 +63,9 @@ TEST(DifferentialRules, MarginsCrossZeroWhereTheConditionStartsToHold) {
   EXPECT_EQ(margin_of("x > 1 || c < 5"), "::std::max(" + wide(diff("x", "1")) + ", " + wide(diff("5", "c")) + ")");
   EXPECT_EQ(margin_of("(x >= 1)"), diff("x", "1"));
   EXPECT_EQ(margin_of("x == 1"), "((x == 1) ? 1.0 : -1.0)");
+  // Where a comparison is not alone its margin says nothing: the condition is bisected.
+  EXPECT_EQ(margin_of("x >= std::max<double>(c, 1)"), "((x >= std :: max < double > ( c , 1 )) ? 1.0 : -1.0)");
+  EXPECT_EQ(margin_of("x > 1 ? c > 2 : c < 3"), "((x > 1 ? c > 2 : c < 3) ? 1.0 : -1.0)");
 }
 
 struct BadSource {
