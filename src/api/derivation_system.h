@@ -15,7 +15,7 @@ class Simulation::DerivationSystem : public continuous::ContinuousSystem {
   void set_state(double t, std::span<const double> y) override { derivation_.scatter_state(t, y); }
   void rates(std::span<double> dy) override { derivation_.evaluate_rates(dy); }
   void read_events(std::vector<continuous::EventReading>& readings) override { derivation_.read_events(readings); }
-  void fire_events() override { derivation_.fire_events(); }
+  std::size_t fire_events() override { return derivation_.fire_events(); }
 
  private:
   derive::Derivation& derivation_;

@@ -30,7 +30,10 @@ constexpr float kFontSize = 12;
 constexpr float kCharWidth = 0.6f * kFontSize;
 constexpr float kDotRadius = 1.8f;
 constexpr float kTickLength = 5;
-constexpr float kLegendRow = 18;
+// Each panel: the series' name in a row of its own, the framed plot, a gap
+// to the next; kMinPanel is the least of all three that still reads.
+constexpr float kNameRow = 18, kPanelGap = 8, kMinPanel = 80;
+constexpr float kNoticeRow = 18;  // "+N more series not shown"
 constexpr int kMinWidth = 320, kMinHeight = 200, kMaxSize = 16384;
 
 constexpr Rgb rgb(int r, int g, int b) {
@@ -96,10 +99,12 @@ struct Ticks {
 };
 
 // Ticks on an axis `pixels` long, as many as leave room between labels: side
-// by side on a horizontal axis, one above another on a vertical one.
+// by side on a horizontal axis, one above another on a vertical one. A short
+// vertical axis (a panel among many) starts from three parts, so that it
+// mostly gets two labels, not one, to read its scale from.
 Ticks ticks_for(const Range& r, float pixels, bool horizontal) {
   const double span = r.hi - r.lo;
-  for (int most = std::max(2, static_cast<int>(pixels / (horizontal ? 70 : 50)));; --most) {
+  for (int most = std::max(horizontal ? 2 : 3, static_cast<int>(pixels / (horizontal ? 70 : 50)));; --most) {
     Ticks t;
     const double step = nice_step(span, most);
     if (!std::isfinite(step) || !(step > 0)) return t;
@@ -135,12 +140,12 @@ Shape dot(Vec2 at, float radius, Rgb color) {
 
 // `align` 0 puts the text's start at x, 0.5 its middle, 1 its end; y is the
 // middle of its capitals.
-Shape text(std::string words, float x, float y, float align = 0) {
+Shape text(std::string words, float x, float y, float align = 0, Rgb color = kInk) {
   Shape s;
   s.kind = Shape::Kind::Text;
   s.points = {{x - align * static_cast<float>(words.size()) * kCharWidth, y + 0.35f * kFontSize}};
   s.text = std::move(words);
-  s.color = kInk;
+  s.color = color;
   return s;
 }
 
@@ -158,44 +163,64 @@ void write_series_plot(const std::string& path, const std::vector<PlotSeries>& s
   if (width < kMinWidth || height < kMinHeight || width > kMaxSize || height > kMaxSize)
     throw ModelError(where, "a plot of " + std::to_string(width) + " x " + std::to_string(height) +
                                 " pixels: it takes 320 x 200 to 16384 x 16384");
-  Range t_data, v_data;
-  std::vector<std::size_t> shown;  // the series with points, in the legend
+  std::vector<std::size_t> shown;  // the series with points, one panel each
+  std::vector<Range> v_data(series.size());
   for (std::size_t k = 0; k < series.size(); ++k) {
     const PlotSeries& s = series[k];
     if (s.t.size() != s.value.size())
       throw ModelError(where, "series '" + s.name + "' has " + std::to_string(s.t.size()) + " times but " +
                                   std::to_string(s.value.size()) + " values");
-    bool any = false;
-    for (std::size_t i = 0; i < s.t.size(); ++i) {
-      if (!finite_point(s, i)) continue;
-      t_data.add(s.t[i]);
-      v_data.add(s.value[i]);
-      any = true;
-    }
-    if (any) shown.push_back(k);
+    for (std::size_t i = 0; i < s.t.size(); ++i)
+      if (finite_point(s, i)) v_data[k].add(s.value[i]);
+    if (!v_data[k].empty()) shown.push_back(k);
   }
-  const Range t_range = padded(t_data), v_range = padded(v_data);
 
-  // Margins: the title above, the y labels' width on the left, the legend's
-  // on the right, x labels and the axis' name below.
-  const std::size_t legend_chars =
-      std::clamp<std::size_t>(static_cast<std::size_t>((0.3f * static_cast<float>(width) - 40) / kCharWidth), 4, 40);
-  std::size_t longest = 0;
-  for (std::size_t k : shown) longest = std::max(longest, std::min(series[k].name.size(), legend_chars));
-  const float top = title.empty() ? 16 : 40;
-  const float bottom = static_cast<float>(height) - 46;
-  const Ticks v_ticks = ticks_for(v_range, bottom - top, false);
-  const float left = std::round(10 + static_cast<float>(v_ticks.widest) * kCharWidth + kTickLength + 6);
-  const float right = static_cast<float>(width) -
-                      (shown.empty() ? 20 : std::round(static_cast<float>(longest) * kCharWidth + 50));
+  // The title above, x labels and the axis' name below, and between them as
+  // many panels as fit at kMinPanel; the rest are counted on a line of their
+  // own at the very bottom.
+  const float top = title.empty() ? 6 : 32;
+  auto panels_fitting = [&](float bottom) {
+    return std::max<std::size_t>(1, static_cast<std::size_t>((bottom - top + kPanelGap) / kMinPanel));
+  };
+  float bottom = static_cast<float>(height) - 46;
+  std::size_t drawn = std::min(shown.size(), panels_fitting(bottom));
+  if (drawn < shown.size()) {
+    bottom -= kNoticeRow;
+    drawn = std::min(drawn, panels_fitting(bottom));
+  }
+  const std::size_t panels = std::max<std::size_t>(1, drawn);  // an empty one without data
+  const float slot = (bottom - top + kPanelGap) / static_cast<float>(panels);
+  struct Panel {
+    std::size_t series = 0;  // index into `series`, for panels with data
+    float top = 0, bottom = 0;
+    Range range;
+    Ticks ticks;
+  };
+  std::vector<Panel> layout(panels);
+  Range t_data;
+  std::size_t widest = 0;
+  for (std::size_t p = 0; p < panels; ++p) {
+    Panel& pane = layout[p];
+    pane.top = std::round(top + static_cast<float>(p) * slot + kNameRow);
+    pane.bottom = std::round(top + static_cast<float>(p + 1) * slot - kPanelGap);
+    pane.range = padded(p < drawn ? v_data[shown[p]] : Range{});
+    pane.ticks = ticks_for(pane.range, pane.bottom - pane.top, false);
+    widest = std::max(widest, pane.ticks.widest);
+    if (p >= drawn) continue;
+    pane.series = shown[p];
+    const PlotSeries& s = series[pane.series];
+    for (std::size_t i = 0; i < s.t.size(); ++i)
+      if (finite_point(s, i)) t_data.add(s.t[i]);
+  }
+  const Range t_range = padded(t_data);
+  // One left edge for all panels, wide enough for the widest y labels.
+  const float left = std::round(10 + static_cast<float>(widest) * kCharWidth + kTickLength + 6);
+  const float right = static_cast<float>(width) - 20;
   if (right - left < 40) throw ModelError(where, "no room for the plot's axes in " + std::to_string(width) + " pixels");
   const Ticks t_ticks = ticks_for(t_range, right - left, true);
 
   auto x_of = [&](double t) {
     return left + static_cast<float>((t - t_range.lo) / (t_range.hi - t_range.lo) * (right - left));
-  };
-  auto y_of = [&](double v) {
-    return bottom - static_cast<float>((v - v_range.lo) / (v_range.hi - v_range.lo) * (bottom - top));
   };
   // One-pixel lines on pixel centres, so they stay sharp.
   auto crisp = [](float at) { return std::floor(at) + 0.5f; };
@@ -206,56 +231,64 @@ void write_series_plot(const std::string& path, const std::vector<PlotSeries>& s
   d.background = kPaper;
   d.line_cap = io::LineCap::Butt;
   d.font_size = kFontSize;
-  for (double t : t_ticks.at) d.shapes.push_back(line({crisp(x_of(t)), top}, {crisp(x_of(t)), bottom}, kGrid));
-  for (double v : v_ticks.at) d.shapes.push_back(line({left, crisp(y_of(v))}, {right, crisp(y_of(v))}, kGrid));
+  const float l = crisp(left), r = crisp(right);
+  const auto name_chars = static_cast<std::size_t>((right - left) / kCharWidth);
+  std::vector<bool> taken;
+  for (std::size_t p = 0; p < panels; ++p) {
+    const Panel& pane = layout[p];
+    auto y_of = [&](double v) {
+      const double share = (v - pane.range.lo) / (pane.range.hi - pane.range.lo);
+      return pane.bottom - static_cast<float>(share * (pane.bottom - pane.top));
+    };
+    for (double t : t_ticks.at)
+      d.shapes.push_back(line({crisp(x_of(t)), pane.top}, {crisp(x_of(t)), pane.bottom}, kGrid));
+    for (double v : pane.ticks.at) d.shapes.push_back(line({left, crisp(y_of(v))}, {right, crisp(y_of(v))}, kGrid));
 
-  // Many modules put points on the same pixel; one dot per pixel and series
-  // looks the same and keeps the drawing as small as the plot, not the data.
-  const auto columns = static_cast<std::size_t>(right - left) + 1, rows = static_cast<std::size_t>(bottom - top) + 1;
-  std::vector<bool> taken(columns * rows);
-  for (std::size_t k : shown) {
-    const PlotSeries& s = series[k];
-    std::fill(taken.begin(), taken.end(), false);
-    for (std::size_t i = 0; i < s.t.size(); ++i) {
-      if (!finite_point(s, i)) continue;
-      const Vec2 at{x_of(s.t[i]), y_of(s.value[i])};
-      if (!std::isfinite(at.x) || !std::isfinite(at.y)) continue;
-      const auto column = static_cast<std::size_t>(std::clamp(at.x - left, 0.0f, static_cast<float>(columns - 1)));
-      const auto row = static_cast<std::size_t>(std::clamp(at.y - top, 0.0f, static_cast<float>(rows - 1)));
-      if (taken[row * columns + column]) continue;
-      taken[row * columns + column] = true;
-      d.shapes.push_back(dot(at, kDotRadius, kPalette[k % kPalette.size()]));
+    if (p < drawn) {
+      // Many modules put points on the same pixel; one dot per pixel looks
+      // the same and keeps the drawing as small as the plot, not the data.
+      const PlotSeries& s = series[pane.series];
+      const Rgb colour = kPalette[pane.series % kPalette.size()];
+      const auto columns = static_cast<std::size_t>(right - left) + 1;
+      const auto rows = static_cast<std::size_t>(pane.bottom - pane.top) + 1;
+      taken.assign(columns * rows, false);
+      for (std::size_t i = 0; i < s.t.size(); ++i) {
+        if (!finite_point(s, i)) continue;
+        const Vec2 at{x_of(s.t[i]), y_of(s.value[i])};
+        if (!std::isfinite(at.x) || !std::isfinite(at.y)) continue;
+        const auto column = static_cast<std::size_t>(std::clamp(at.x - left, 0.0f, static_cast<float>(columns - 1)));
+        const auto row = static_cast<std::size_t>(std::clamp(at.y - pane.top, 0.0f, static_cast<float>(rows - 1)));
+        if (taken[row * columns + column]) continue;
+        taken[row * columns + column] = true;
+        d.shapes.push_back(dot(at, kDotRadius, colour));
+      }
+      d.shapes.push_back(text(shortened(s.name, std::max<std::size_t>(4, name_chars)), left,
+                              pane.top - kNameRow / 2 - 1, 0, colour));
+    }
+
+    const float t = crisp(pane.top), b = crisp(pane.bottom);
+    d.shapes.push_back(line({l, t}, {r, t}, kInk));
+    d.shapes.push_back(line({r, t}, {r, b}, kInk));
+    d.shapes.push_back(line({l, b}, {r, b}, kInk));
+    d.shapes.push_back(line({l, t}, {l, b}, kInk));
+    for (std::size_t i = 0; i < pane.ticks.at.size(); ++i) {
+      const float y = crisp(y_of(pane.ticks.at[i]));
+      d.shapes.push_back(line({l - kTickLength, y}, {l, y}, kInk));
+      d.shapes.push_back(text(pane.ticks.labels[i], l - kTickLength - 4, y, 1));
     }
   }
 
-  const float l = crisp(left), r = crisp(right), t = crisp(top), b = crisp(bottom);
-  d.shapes.push_back(line({l, t}, {r, t}, kInk));
-  d.shapes.push_back(line({r, t}, {r, b}, kInk));
-  d.shapes.push_back(line({l, b}, {r, b}, kInk));
-  d.shapes.push_back(line({l, t}, {l, b}, kInk));
+  // The shared t axis, labelled under the bottom panel only.
+  const float b = crisp(layout.back().bottom);
   for (std::size_t i = 0; i < t_ticks.at.size(); ++i) {
     const float x = crisp(x_of(t_ticks.at[i]));
     d.shapes.push_back(line({x, b}, {x, b + kTickLength}, kInk));
     d.shapes.push_back(text(t_ticks.labels[i], x, b + kTickLength + 10, 0.5f));
   }
-  for (std::size_t i = 0; i < v_ticks.at.size(); ++i) {
-    const float y = crisp(y_of(v_ticks.at[i]));
-    d.shapes.push_back(line({l - kTickLength, y}, {l, y}, kInk));
-    d.shapes.push_back(text(v_ticks.labels[i], l - kTickLength - 4, y, 1));
-  }
   d.shapes.push_back(text("t", (left + right) / 2, b + kTickLength + 30, 0.5f));
-
-  // The legend beside the plot, as many rows as its height holds.
-  const std::size_t fit = std::max<std::size_t>(1, static_cast<std::size_t>((bottom - top) / kLegendRow));
-  const std::size_t listed = shown.size() <= fit ? shown.size() : fit - 1;
-  for (std::size_t i = 0; i < listed; ++i) {
-    const float y = top + 8 + static_cast<float>(i) * kLegendRow;
-    d.shapes.push_back(dot({right + 20, y}, 4, kPalette[shown[i] % kPalette.size()]));
-    d.shapes.push_back(text(shortened(series[shown[i]].name, legend_chars), right + 30, y));
-  }
-  if (listed < shown.size())
-    d.shapes.push_back(text("+" + std::to_string(shown.size() - listed) + " more", right + 14,
-                            top + 8 + static_cast<float>(listed) * kLegendRow));
+  if (drawn < shown.size())
+    d.shapes.push_back(text("+" + std::to_string(shown.size() - drawn) + " more series not shown", left,
+                            static_cast<float>(height) - kNoticeRow / 2 - 2));
 
   if (!title.empty()) {  // centred over the plot, unless that pushes it off the left edge
     const float half = static_cast<float>(title.size()) * kCharWidth / 2;

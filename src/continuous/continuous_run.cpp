@@ -39,12 +39,13 @@ void ContinuousRun::start(double t0, double horizon) {
   system_.gather(y_);
   system_.set_state(t0, y_);
   settle_events();
-  restart_integrator();
+  restart_integrator(true);
 }
 
-void ContinuousRun::restart_integrator() {
+void ContinuousRun::restart_integrator(bool first) {
   system_.gather(y_);
-  integrator_->reset(time_, y_);
+  if (first) integrator_->reset(time_, y_);
+  else integrator_->restart(time_, y_);
   system_.set_state(time_, y_);  // the integrator's evaluations may have moved it
   valid_until_ = time_;
   event_pending_ = false;
@@ -63,7 +64,7 @@ void ContinuousRun::advance_to(double t) {
       time_ = valid_until_;
       set_interpolated(time_);
       settle_events();
-      restart_integrator();
+      restart_integrator(false);
       continue;
     }
     if (valid_until_ >= horizon_) horizon_ = t;  // asked past the end given at start
@@ -134,15 +135,13 @@ double ContinuousRun::locate_event(double t0, double t1) {
 void ContinuousRun::settle_events() {
   for (int round = 0;; ++round) {
     system_.read_events(readings_);
-    const auto firing = std::count_if(readings_.begin(), readings_.end(), [](const EventReading& r) { return r.holds; });
-    if (firing == 0) return;
+    if (std::none_of(readings_.begin(), readings_.end(), [](const EventReading& r) { return r.holds; })) return;
     if (round == settings_.max_event_rounds)
       throw ContinuousRunError(time_, "events keep firing at t = " + at_time(time_) + ": after " +
                                           std::to_string(round) +
                                           " rounds an event's condition still holds; its production must "
                                           "take the module out of the condition (or remove it)");
-    events_fired_ += static_cast<std::size_t>(firing);
-    system_.fire_events();
+    events_fired_ += system_.fire_events();
     system_.gather(y_);
     system_.set_state(time_, y_);
   }

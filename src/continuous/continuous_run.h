@@ -38,8 +38,9 @@ class ContinuousSystem {
   virtual void rates(std::span<double> dy) = 0;
   // The event conditions at the state set last, in a fixed order until fire_events().
   virtual void read_events(std::vector<EventReading>& readings) = 0;
-  // Applies the productions of the events that hold at the state set last.
-  virtual void fire_events() = 0;
+  // Applies the productions of the events that hold at the state set last;
+  // returns how many were applied.
+  virtual std::size_t fire_events() = 0;
 };
 
 struct ContinuousSettings {
@@ -94,7 +95,8 @@ class ContinuousRun {
   double locate_event(double t0, double t1);
   // Events at the current instant, round after round until none holds.
   void settle_events();
-  void restart_integrator();
+  // From the state of the string: the run's first start, or after events.
+  void restart_integrator(bool first);
 
   ContinuousSystem& system_;
   ContinuousSettings settings_;

@@ -82,6 +82,13 @@ class Cvode final : public Integrator {
     }
   }
 
+  void restart(double t, std::span<const double> y) override {
+    double last = 0;
+    const bool stepped = memory_ && n_ == y.size() && CVodeGetLastStep(memory_.get(), &last) == CV_SUCCESS;
+    reset(t, y);
+    if (stepped && last > 0) check(CVodeSetInitStep(memory_.get(), last), "CVodeSetInitStep");
+  }
+
   double step(double t_limit) override {
     check_limit(t_, t_limit);
     if (n_ == 0) {

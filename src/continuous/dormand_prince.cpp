@@ -64,6 +64,12 @@ class DormandPrince final : public Integrator {
     h_ = first_step_;
   }
 
+  void restart(double t, std::span<const double> y) override {
+    const double h = h_;
+    reset(t, y);
+    if (h > 0) h_ = h;
+  }
+
   double step(double t_limit) override {
     check_limit(t_, t_limit);
     const std::size_t n = y_.size();

@@ -47,6 +47,10 @@ class Integrator {
   virtual ~Integrator() = default;
   // Starts again at (t, y); the system's size may differ from before.
   virtual void reset(double t, std::span<const double> y) = 0;
+  // The same after a jump of the state (an event): an adaptive method starts
+  // with the step it had come to rather than the first step of the settings,
+  // which the size of a model's steps rarely has anything to do with.
+  virtual void restart(double t, std::span<const double> y) { reset(t, y); }
   // Advances one step, not past `t_limit` (> time()); returns the new time.
   // Throws IntegrationFailed when no step can be taken or the state stops
   // being finite.

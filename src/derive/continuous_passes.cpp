@@ -111,7 +111,8 @@ void Derivation::read_events(std::vector<continuous::EventReading>& readings) {
   }
 }
 
-void Derivation::fire_events() {
+std::size_t Derivation::fire_events() {
+  std::size_t applied = 0;
   {
     PassGuard guard(passes_running_);
     const StringView src = current_view();
@@ -133,6 +134,7 @@ void Derivation::fire_events() {
       if (apply_forward(RuleKind::Event, src, pos, next_, next_, true, &consumed)) {
         note_rewrite(pos, consumed, next_.size_bytes() - output_before);
         pos = consumed;
+        ++applied;
       } else {
         const std::size_t n = src.next(pos);
         next_.append(src.data + pos, n - pos);
@@ -146,6 +148,7 @@ void Derivation::fire_events() {
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
   decompose();
   map_state();
+  return applied;
 }
 
 }  // namespace sylva::derive

@@ -138,8 +138,9 @@ class Derivation {
   // its condition holds and its margin.
   void read_events(std::vector<continuous::EventReading>& readings);
   // One pass of event rules: each module whose first holding event rule
-  // applies is replaced by its successor; then decomposition.
-  void fire_events();
+  // applies is replaced by its successor; then decomposition. Returns the
+  // number of productions applied.
+  std::size_t fire_events();
 
   // ---- parallel passes (parallel_derivation.cpp)
   // Passes run on up to `threads` threads wherever the result cannot differ

@@ -27,8 +27,9 @@ class SplittingCells : public ContinuousSystem {
     readings.clear();
     for (double x : cells_) readings.push_back({x >= 1.0, x - 1.0});
   }
-  void fire_events() override {
+  std::size_t fire_events() override {
     std::vector<double> next;
+    const std::size_t before = fired_at_.size();
     for (double x : cells_) {
       if (x >= 1.0) {
         next.push_back(x / 2);
@@ -39,6 +40,7 @@ class SplittingCells : public ContinuousSystem {
       }
     }
     cells_ = next;
+    return fired_at_.size() - before;
   }
   std::vector<double> cells_;
   std::vector<double> fired_at_;
@@ -115,7 +117,7 @@ TEST(ContinuousRunTest, EventsThatNeverSettleStopTheRun) {
   class Stuck : public SplittingCells {
    public:
     Stuck() : SplittingCells({1.0}) {}
-    void fire_events() override {}
+    std::size_t fire_events() override { return 0; }
   } stuck;
   ContinuousSettings s = settings(Method::kDormandPrince);
   s.max_event_rounds = 50;
