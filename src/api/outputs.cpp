@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "export/mesh_writers.h"
@@ -125,9 +126,28 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
   }
 }
 
-void write_png_frame(const std::string& path, Simulation& simulation, const geometry::ViewParameters& camera,
-                     const OutputOptions& options) {
-  write_image(path, simulation.scene(), simulation, camera, options);
+void check_frame_formats(const std::vector<std::string>& formats) {
+  for (const std::string& format : formats)
+    if (format != kStringFrame && format_of("frame." + format) == Format::Unknown)
+      throw ModelError(SourceLocation{"--frame-format " + format, 0, 0},
+                       "unknown frame format (expected png, obj, ply, glb, svg, pdf, ps, eps or str)");
+}
+
+void write_frame(const std::string& dir, int number, const std::vector<std::string>& formats, Simulation& simulation,
+                 const geometry::ViewParameters& camera, const OutputOptions& options) {
+  char stem[32];
+  std::snprintf(stem, sizeof stem, "frame-%04d.", number);
+  const std::string path = (std::filesystem::path(dir) / stem).string();
+  std::optional<geometry::Scene> scene;
+  for (const std::string& format : formats) {
+    if (format == kStringFrame) {
+      simulation.write_string(path + format);
+      continue;
+    }
+    if (!scene) scene = simulation.scene();
+    if (format == "png") write_image(path + format, *scene, simulation, camera, options);
+    else write_output(path + format, *scene, simulation, options, simulation.primary_view());
+  }
 }
 
 std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation) {
@@ -137,7 +157,9 @@ std::string scene_glb(const geometry::Scene& plant, const Simulation& simulation
   return io::encode_glb(mesh, simulation.inputs().palette, simulation.types(), texture_images(view, simulation));
 }
 
-int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps) {
+int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps,
+                 const std::vector<std::string>& formats) {
+  check_frame_formats(formats);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw ModelError(SourceLocation{dir, 0, 0}, "cannot create the frames folder: " + ec.message());
@@ -183,9 +205,7 @@ int write_frames(const std::string& dir, Simulation& simulation, const OutputOpt
     const int done = simulation.step_number();
     const bool last = done >= frames.back() || simulation.stopped();
     if (frame_wanted(done) || (last && simulation.stopped())) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame-%04d.png", done);
-      write_image((std::filesystem::path(dir) / name).string(), simulation.scene(), simulation, view, options);
+      write_frame(dir, done, formats, simulation, view, options);
       ++written;
     }
     if (last) break;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "api/simulation.h"
 #include "geometry/camera.h"
@@ -27,17 +28,26 @@ void write_output(const std::string& path, const geometry::Scene& scene, const S
 // contour sides, rather than as a mesh file exports it. What a viewer shows.
 std::string scene_glb(const geometry::Scene& scene, const Simulation& simulation);
 
-// A PNG of the current string drawn by the turtle, seen by `camera`.
-void write_png_frame(const std::string& path, Simulation& simulation, const geometry::ViewParameters& camera,
-                     const OutputOptions& options);
+// What a frame can be written as: the output formats' extensions (png,
+// obj, ply, glb, svg, pdf, ps, eps) and "str", the string's text.
+inline constexpr const char* kStringFrame = "str";
+// Throws ModelError naming a format that is none of those.
+void check_frame_formats(const std::vector<std::string>& formats);
 
-// Runs the derivation again from the axiom and writes one PNG per frame of
-// the animation file (every step when there is none) into `dir` as
-// frame-NNNN.png, N being the step. The camera frames the last frame's
+// The current state as DIR/frame-NNNN.EXT, N being `number`, in each of
+// `formats`: PNG images seen by `camera` (one camera for a whole animation),
+// the others as -o writes them.
+void write_frame(const std::string& dir, int number, const std::vector<std::string>& formats, Simulation& simulation,
+                 const geometry::ViewParameters& camera, const OutputOptions& options);
+
+// Runs the derivation again from the axiom and writes one PNG (or the
+// `formats` write_frame takes) per frame of the animation file (every step
+// when there is none) into `dir` as frame-NNNN.png, N being the step. The camera frames the last frame's
 // bounds unless the animation file asks to rescale between frames or the view
 // file gives a box. With "display on request: on" the frames are the first,
 // the last and the steps in which the model called DisplayFrame(). Frames
 // show the simulation's primary view. Returns the number of frames written.
-int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps = -1);
+int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps = -1,
+                 const std::vector<std::string>& formats = {"png"});
 
 }  // namespace sylva

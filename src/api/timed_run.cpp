@@ -115,6 +115,7 @@ void run_in_time(Simulation& simulation, const TimedRunOptions& options, const O
   ParameterRecorder recorder(simulation, options.record);
   std::optional<geometry::ViewParameters> camera;
   if (!options.frames_dir.empty()) {
+    check_frame_formats(options.frame_formats);
     std::filesystem::create_directories(options.frames_dir);
     camera = frame_camera(simulation, times);
   }
@@ -129,11 +130,8 @@ void run_in_time(Simulation& simulation, const TimedRunOptions& options, const O
         recorder.sample(times[k], simulation, rows);
         if (sink) (*sink)(rows);
       }
-      if (camera) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame-%04zu.png", k);
-        write_png_frame((std::filesystem::path(options.frames_dir) / name).string(), simulation, *camera, output);
-      }
+      if (camera)
+        write_frame(options.frames_dir, static_cast<int>(k), options.frame_formats, simulation, *camera, output);
     }
   };
   if (options.record_path.empty()) run(nullptr);

@@ -18,7 +18,8 @@ struct TimedRunOptions {
   std::vector<std::string> record;
   std::string record_path;  // CSV: t,index,module,parameter,value ("-": standard output)
   std::string plot_path;    // PNG of the recorded parameters against time
-  std::string frames_dir;   // frame-NNNN.png, N the sample
+  std::string frames_dir;   // frame-NNNN.EXT, N the sample
+  std::vector<std::string> frame_formats = {"png"};  // as write_frame (api/outputs.h) takes them
 };
 
 // 0, dt, 2dt ... and `end` (once, even where dt does not divide it); k dt

@@ -81,6 +81,7 @@ struct RunOptions {
   bool compile_only = false;        // lpfg's -c
   int steps = -1;
   std::string string_path, interpreted_path, turtle_path, frames_dir, axiom_from;
+  std::vector<std::string> frame_formats = {"png"};
   std::vector<std::string> outputs;
   sylva::OutputOptions output;
   sylva::EnvironmentOptions environment;
@@ -187,6 +188,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   if (in_time) {
     sylva::TimedRunOptions timed = r.timed;
     timed.frames_dir = r.frames_dir;
+    timed.frame_formats = r.frame_formats;
     if (!timed.record.empty() && timed.record_path.empty()) timed.record_path = "-";
     sylva::continuous::ContinuousSettings settings = r.continuous;
     settings.integrator.method = sylva::continuous::method_named(r.integrator);
@@ -199,7 +201,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
                    simulation.time(), counts.events, counts.steps, counts.evaluations, counts.location_probes);
     }
   } else if (!r.frames_dir.empty()) {
-    const int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps);
+    const int frames = sylva::write_frames(r.frames_dir, simulation, r.output, r.steps, r.frame_formats);
     if (o.build.verbose) std::fprintf(stderr, "sylva: wrote %d frames to %s\n", frames, r.frames_dir.c_str());
   }
   if (!in_time) simulation.run(r.steps);  // frames that ended on the final step leave it in place
@@ -328,6 +330,10 @@ int main(int argc, char** argv) {
                   "Write one PNG per animation frame into DIR (frames from the animation file's first frame, "
                   "last frame and step; every step without one)")
       ->type_name("DIR");
+  run->add_option("--frame-format", r.frame_formats,
+                  "What --frames writes for each frame (repeatable; default png): png, obj, ply, glb, svg, pdf, ps, "
+                  "eps, or str for the string")
+      ->type_name("EXT");
   run->add_option("--axiom-from", r.axiom_from,
                   "Start from the string saved in FILE (by --string or OutputString) instead of the axiom")
       ->type_name("FILE");

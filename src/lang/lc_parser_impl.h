@@ -121,6 +121,7 @@ class LcParser {
   static std::string in_context_misplaced(const Token& tok);
   BodyPart parse_in_context();
   Code parse_event_condition();
+  void warn_of_equality(const Rule& rule);
   bool rate_statement_ahead() const;
   BodyPart parse_rate();
   void resolve_rates(Rule& rule);

@@ -73,6 +73,7 @@ void LcParser::parse_rule() {
   in_derivative_rule_ = false;
   if (peek().is_punct(";")) next();
   if (block_ == RuleKind::Derivative) resolve_rates(rule);
+  if (block_ == RuleKind::Event) warn_of_equality(rule);
   model_.items.emplace_back(std::move(rule));
 }
 
@@ -96,6 +97,41 @@ Code LcParser::parse_event_condition() {
   if (condition.empty()) fail(peek(), "expected a condition in 'when ( )'");
   next();  // )
   return condition;
+}
+
+// A continuously changing value passes a threshold between two instants the
+// integrator looks at; it is equal to it at neither, and the event would
+// never fire. Warned where `==` compares a float or double parameter.
+void LcParser::warn_of_equality(const Rule& rule) {
+  std::unordered_set<std::string> continuous;
+  for (const auto& part : rule.parts)
+    for (const PatternModule& m : part)
+      if (const ModuleDecl* decl = find_module(m.name))
+        for (std::size_t i = 0; i < m.formals.size() && i < decl->param_types.size(); ++i)
+          if (decl->param_types[i] == "float" || decl->param_types[i] == "double") continuous.insert(m.formals[i]);
+  const Code& c = rule.event_condition;
+  // The operands of each `==` outside brackets: up to the `&&` or `||` around it.
+  auto joins = [](const Token& t) { return t.is_punct("&&") || t.is_punct("||"); };
+  int depth = 0;
+  std::size_t clause = 0;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    if (is_open(c[k])) ++depth;
+    if (is_close(c[k])) --depth;
+    if (depth != 0) continue;
+    if (joins(c[k])) clause = k + 1;
+    if (!c[k].is_punct("==")) continue;
+    std::size_t end = k;
+    for (int d = 0; end < c.size() && (d != 0 || !joins(c[end])); ++end) d += is_open(c[end]) - is_close(c[end]);
+    const bool reads_continuous = std::any_of(c.begin() + static_cast<std::ptrdiff_t>(clause),
+                                              c.begin() + static_cast<std::ptrdiff_t>(end),
+                                              [&](const Token& t) { return t.is_ident() && continuous.count(t.text); });
+    if (!reads_continuous) continue;
+    const SourceLocation at = stream_.location(c[k]);
+    model_.warnings.push_back(at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                              ": warning: '==' on a parameter that changes continuously: it equals the value only "
+                              "at an instant the integration does not land on, so the event may never fire; "
+                              "write '>=' or '<=' (docs/continuous-time.md)");
+  }
 }
 
 // `d(x) = ` begins a rate statement in a derivative rule's body.

@@ -80,6 +80,29 @@ TEST(ContinuousCommand, WritesTheRecordAndItsPlotToFiles) {
   EXPECT_EQ(png.substr(1, 3), "PNG");
 }
 
+TEST(ContinuousCommand, FramesHoldTheStateAtEverySample) {
+  const std::string dir = folder_with_model(kLogistic);
+  const ProcessResult r = run_sylva({"run", "model.l", "--time", "1", "--dt", "0.5", "--tolerance", "1e-10", "--frames",
+                                     "frames", "--frame-format", "str", "--frame-format", "obj"},
+                                    dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int k = 0; k <= 2; ++k) {
+    const std::string stem = dir + "/frames/frame-000" + std::to_string(k);
+    const std::string text = read_text(stem + ".str");
+    ASSERT_EQ(text.rfind("A(", 0), 0u) << text;
+    EXPECT_NEAR(std::stod(text.substr(2)), 1 / (1 + std::exp(-0.5 * k)), 1e-8) << "sample " << k;
+    EXPECT_TRUE(std::filesystem::exists(stem + ".obj"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/frames/frame-0003.str"));
+}
+
+TEST(ContinuousCommand, AnUnknownFrameFormatIsAnError) {
+  const std::string dir = folder_with_model(kLogistic);
+  const ProcessResult r = run_sylva({"run", "model.l", "--time", "1", "--frames", "f", "--frame-format", "jpg"}, dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--frame-format jpg: error: unknown frame format"), std::string::npos) << r.err;
+}
+
 TEST(ContinuousCommand, AnExplicitMethodOnAStiffSystemStopsWithTheTimeReached) {
   const std::string dir = folder_with_model(
       "#include <lpfgall.h>\nmodule A(double);\naxiom: A(1);\nderivatives:\nA(x) : { d(x) = -1000 * x; }\n");

@@ -68,6 +68,17 @@ TEST(DifferentialRules, MarginsCrossZeroWhereTheConditionStartsToHold) {
   EXPECT_EQ(margin_of("x > 1 ? c > 2 : c < 3"), "((x > 1 ? c > 2 : c < 3) ? 1.0 : -1.0)");
 }
 
+TEST(DifferentialRules, EqualityOnAContinuousParameterIsWarnedOf) {
+  const Model m = parse_lc_text(
+      "module A(double, int);\n"
+      "events:\n"
+      "A(x, k) : when (k == 0 && x >= 1) { produce A(x, 1); }\n"
+      "A(x, k) : when (k == 1 && x == 2) { produce A(x, 2); }\n");
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_EQ(m.warnings[0].rfind("model.l:4:29: warning: '==' on a parameter that changes continuously", 0), 0u)
+      << m.warnings[0];
+}
+
 struct BadSource {
   const char* source;
   const char* error;
