@@ -12,7 +12,7 @@
 
 #include "api/simulation.h"
 #include "api/timed_run.h"
-#include "examples/example_strings.h"
+#include "examples/continuous_examples.h"
 #include "io/string_text.h"
 #include "test_support.h"
 
@@ -20,30 +20,6 @@ namespace sylva::test::examples {
 namespace {
 
 std::string model(const std::string& name) { return example_path(name + "/" + name + ".l"); }
-
-// A simulation run in continuous time up to `end`.
-std::unique_ptr<Simulation> timed(const std::string& name, double end, continuous::Method method,
-                                  double tolerance = 1e-9, std::vector<std::string> defines = {}) {
-  build::BuildOptions options;
-  options.cache_dir = SYLVA_TEST_CACHE_DIR;
-  options.defines = std::move(defines);
-  auto simulation = std::make_unique<Simulation>(model(name), options, [](const std::string&) {});
-  continuous::ContinuousSettings settings;
-  settings.integrator.method = method;
-  settings.integrator.relative_tolerance = tolerance;
-  settings.integrator.absolute_tolerance = tolerance * 1e-3;
-  settings.integrator.step = 1e-3;
-  settings.event_tolerance = 1e-12;
-  settings.end_time = end;
-  simulation->set_continuous_settings(settings);
-  return simulation;
-}
-
-std::vector<Module> modules_of(const Simulation& s) {
-  std::string text = io::format_string(s.string(), s.types());
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return parse_modules(text);
-}
 
 // ---- logistic threshold ------------------------------------------------------
 

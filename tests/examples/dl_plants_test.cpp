@@ -18,36 +18,17 @@
 
 #include "api/simulation.h"
 #include "api/timed_run.h"
-#include "examples/example_strings.h"
+#include "examples/continuous_examples.h"
 #include "io/string_text.h"
 #include "test_support.h"
 
 namespace sylva::test::examples {
 namespace {
 
-std::string model(const std::string& name) { return example_path(name + "/" + name + ".l"); }
 
-// A simulation run in continuous time up to `end` (Dormand-Prince, tight
-// tolerances: the checks below are to 1e-6).
-std::unique_ptr<Simulation> timed(const std::string& name, double end) {
-  build::BuildOptions options;
-  options.cache_dir = SYLVA_TEST_CACHE_DIR;
-  auto simulation = std::make_unique<Simulation>(model(name), options, [](const std::string&) {});
-  continuous::ContinuousSettings settings;
-  settings.integrator.method = continuous::Method::kDormandPrince;
-  settings.integrator.relative_tolerance = 1e-10;
-  settings.integrator.absolute_tolerance = 1e-13;
-  settings.integrator.step = 1e-3;
-  settings.event_tolerance = 1e-12;
-  settings.end_time = end;
-  simulation->set_continuous_settings(settings);
-  return simulation;
-}
-
-std::vector<Module> modules_of(const Simulation& s) {
-  std::string text = io::format_string(s.string(), s.types());
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return parse_modules(text);
+// Run with Dormand-Prince at tight tolerances: the checks below are to 1e-6.
+std::unique_ptr<Simulation> precisely(const std::string& name, double end) {
+  return timed(name, end, continuous::Method::kDormandPrince, 1e-10);
 }
 
 std::vector<Module> named(const std::vector<Module>& string, const std::string& name) {
@@ -81,7 +62,7 @@ TEST(DlPlantsTest, PinnateLeafMakesALeafletPairEachTimeTheApexReachesTheThreshol
   const double t1 = std::log(xth * (xamax - x0) / (x0 * (xamax - xth))) / ra;  // ln(4)/2 = 0.693
   ASSERT_NEAR((1 - k) * xth, x0, 1e-15);
   const double end = 9;  // Figure 9's last frame, 900 x 0.01
-  auto s = timed("pinnate-leaf", end);
+  auto s = precisely("pinnate-leaf", end);
   const double eps = 1e-3;
   for (int j = 1; j <= n0; ++j) {
     s->advance_to(j * t1 - eps);
@@ -147,7 +128,7 @@ TEST(DlPlantsTest, CampanulaFlowersAtTheApexsArithmeticTimesAndItsInternodesFoll
   // The apex grows at v: it reaches xth after (xth - x0)/v, then every k xth / v.
   std::vector<double> event;
   for (int j = 0; j <= n0; ++j) event.push_back((xth - x0) / v + j * k * xth / v);  // 0.8, 1.3, ..., 4.8
-  auto s = timed("campanula", 9);
+  auto s = precisely("campanula", 9);
   const double eps = 1e-3;
   for (int j = 0; j <= n0; ++j) {
     s->advance_to(event[j] - eps);
@@ -164,7 +145,7 @@ TEST(DlPlantsTest, CampanulaFlowersAtTheApexsArithmeticTimesAndItsInternodesFoll
 
   // Internode j is G(dx, T1) at its age past its initial length, k xth (the
   // terminal one: xth); the angles likewise from alpha0. A second run, from 0.
-  s = timed("campanula", 9);
+  s = precisely("campanula", 9);
   for (double t : {2.0, 3.7, 6.1, 9.0}) {
     s->advance_to(t);
     const std::vector<Module> m = modules_of(*s);
@@ -213,7 +194,7 @@ Counts lychnis_counts(double taumax, double t) {
 
 TEST(DlPlantsTest, LychnisApicesAndFlowersFollowTheFibonacciRecurrence) {
   const double taumax = 2.0, dx = 1.0, T = 3.0;
-  auto s = timed("lychnis", 10.5);
+  auto s = precisely("lychnis", 10.5);
   std::vector<int> opened;  // flowers opening at k taumax/2, from the simulation of ages
   for (int k = 0; k <= 9; ++k) {
     const double t = (k + 0.5) * taumax / 2;
@@ -253,7 +234,7 @@ std::vector<Head> heads(const std::vector<Module>& string) {
 
 TEST(DlPlantsTest, HieraciumFlowersBasipetallyFromTheMainApexDown) {
   const double t_hormone = 5.0, v_main = 4.0;
-  auto s = timed("hieracium", 14);
+  auto s = precisely("hieracium", 14);
   // No hormone before it is generated at the base; then its front climbs the
   // basal internode at the main axis' speed.
   s->advance_to(t_hormone - 1e-3);
