@@ -184,9 +184,14 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   simulation.set_output_options(r.output);
   if (!r.axiom_from.empty())
     simulation.start_from(sylva::io::read_string_file(r.axiom_from, simulation.types()));
-  const bool in_time = r.timed.end_time > 0;
+  sylva::TimedRunOptions timed = r.timed;
+  // The animation file's times, where the command line gives none.
+  if (const auto& animation = simulation.inputs().animation; animation && simulation.continuous()) {
+    if (timed.end_time == 0 && animation->end_time) timed.end_time = *animation->end_time;
+    if (timed.dt == 0 && animation->time_step) timed.dt = *animation->time_step;
+  }
+  const bool in_time = timed.end_time > 0;
   if (in_time) {
-    sylva::TimedRunOptions timed = r.timed;
     timed.frames_dir = r.frames_dir;
     timed.frame_formats = r.frame_formats;
     if (!timed.record.empty() && timed.record_path.empty()) timed.record_path = "-";

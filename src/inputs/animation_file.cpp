@@ -169,6 +169,10 @@ AnimationFile read_animation_file(const std::string& path) {
       flag(animation.new_view_between_frames);
     } else if (name == "display on request") {
       flag(animation.display_on_request);
+    } else if (name == "end time" || name == "time step") {
+      const std::optional<double> value = arguments.empty() ? std::nullopt : parse_double(value_at.text);
+      if (!value || !(*value > 0)) unreadable("a positive time");
+      else (name == "end time" ? animation.end_time : animation.time_step) = *value;
     } else {
       warnings.push_back(
           warning_at(path, command->name_word, "unknown animation command '" + command->name_word.text + "' ignored"));

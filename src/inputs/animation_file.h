@@ -31,6 +31,11 @@ struct AnimationFile {
   bool scale_between_frames = false;
   bool new_view_between_frames = false;
   bool display_on_request = false;  // only DisplayFrame() and the first and last frame are shown
+  // Sylva's own, for a differential L-system run in continuous time
+  // (docs/continuous-time.md): "end time: T" and "time step: DT", what
+  // --time and --dt give on the command line.
+  std::optional<double> end_time;
+  std::optional<double> time_step;
   // "file:line:column: warning: ..." for commands lpfg does not know.
   std::vector<std::string> warnings;
 

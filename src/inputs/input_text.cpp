@@ -44,14 +44,20 @@ std::string to_lower(std::string_view text) {
   return out;
 }
 
-std::optional<float> parse_float(std::string_view text) {
+namespace {
+template <class Number>
+std::optional<Number> parse_number(std::string_view text) {
   if (!text.empty() && text[0] == '+') text.remove_prefix(1);
   if (text.empty() || text[0] == '+') return std::nullopt;
-  float value = 0;
+  Number value = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
+}  // namespace
+
+std::optional<float> parse_float(std::string_view text) { return parse_number<float>(text); }
+std::optional<double> parse_double(std::string_view text) { return parse_number<double>(text); }
 
 std::optional<int> parse_int(std::string_view text) {
   std::optional<float> value = parse_float(text);

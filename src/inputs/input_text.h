@@ -26,6 +26,7 @@ std::string resolve_beside(const std::string& base_file, const std::string& name
 std::string to_lower(std::string_view text);
 
 std::optional<float> parse_float(std::string_view text);
+std::optional<double> parse_double(std::string_view text);
 // Integers; a number with a zero fraction ("8.0") is accepted as well.
 std::optional<int> parse_int(std::string_view text);
 std::optional<bool> parse_flag(std::string_view text);  // on/off, yes/no, true/false

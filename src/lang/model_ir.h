@@ -56,7 +56,7 @@ struct BodyPart {
   std::vector<ModuleCall> modules;  // kProduce, kNProduce, kPropensity, kInContext
   Token at;
   abi::PatternPart context = abi::kLeft;  // kInContext: which context it tests
-  std::string rate_of;                    // kRate
+  std::string rate_of = {};               // kRate
   int rate_index = -1;                    // kRate
 };
 using Body = std::vector<BodyPart>;

@@ -96,6 +96,17 @@ TEST(ContinuousCommand, FramesHoldTheStateAtEverySample) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/frames/frame-0003.str"));
 }
 
+TEST(ContinuousCommand, TheAnimationFileCanGiveTheTimes) {
+  const std::string dir = folder_with_model(kLogistic);
+  std::ofstream(dir + "/model.a") << "end time: 1\ntime step: 0.5\n";
+  const ProcessResult r =
+      run_sylva({"run", "model.l", "model.a", "--frames", "f", "--frame-format", "str", "--string", "end.str"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/f/frame-0002.str"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f/frame-0003.str"));
+  EXPECT_NEAR(std::stod(read_text(dir + "/end.str").substr(2)), 1 / (1 + std::exp(-1.0)), 1e-6);
+}
+
 TEST(ContinuousCommand, AnUnknownFrameFormatIsAnError) {
   const std::string dir = folder_with_model(kLogistic);
   const ProcessResult r = run_sylva({"run", "model.l", "--time", "1", "--frames", "f", "--frame-format", "jpg"}, dir);

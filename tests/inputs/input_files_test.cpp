@@ -62,6 +62,21 @@ TEST(AnimationFileTest, ReadsTheEditorsDialect) {
   EXPECT_TRUE(trailing.warnings.empty());
 }
 
+// Continuous time (docs/continuous-time.md): the run's end and the time between frames.
+TEST(AnimationFileTest, ReadsTheTimesOfAContinuousRun) {
+  std::string dir = test::make_temp_dir("animation-times");
+  io::AnimationFile a = io::read_animation_file(write_file(dir, "t.a", "end time: 575\ntime step: 0.1\n"));
+  EXPECT_EQ(a.end_time, 575.0);
+  EXPECT_EQ(a.time_step, 0.1);  // as a double, not rounded to a float
+  EXPECT_TRUE(a.warnings.empty());
+  io::AnimationFile bad = io::read_animation_file(write_file(dir, "u.a", "end time: -1\ntime step: soon\n"));
+  EXPECT_FALSE(bad.end_time);
+  EXPECT_FALSE(bad.time_step);
+  ASSERT_EQ(bad.warnings.size(), 2u);
+  EXPECT_NE(bad.warnings[0].find("u.a:1:11: warning: expected a positive time after 'end time:'"), std::string::npos)
+      << bad.warnings[0];
+}
+
 // cpfg's frame intervals choose the frames on their own: 1, then 3 to 9 every
 // 3 steps (3, 6, 9), then 12 and 13 with the file's step of 1.
 TEST(AnimationFileTest, ReadsCpfgFrameIntervals) {
