@@ -174,7 +174,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   struct Chunk {
     ModuleString& out;
     std::size_t reached = 0;  // where its pass stopped: at or past the next chunk's start
-    std::exception_ptr failure;
+    std::exception_ptr failure = nullptr;
   };
   std::vector<Chunk> chunks;
   chunks.reserve(n);

@@ -371,13 +371,15 @@ TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
       ASSERT_EQ(skip_branch_forward(indexed, at), past) << at;
       if (index_at(s, past) - index_at(s, at) > 100) ++long_skips;
     }
-    if (m == rt::mid::EB) ASSERT_EQ(skip_branch_backward(indexed, at), skip_branch_backward(walked, at)) << at;
+    if (m == rt::mid::EB) {
+      ASSERT_EQ(skip_branch_backward(indexed, at), skip_branch_backward(walked, at)) << at;
+    }
     ASSERT_EQ(find_unmatched_end(indexed, at), find_unmatched_end(walked, at)) << at;
   }
   EXPECT_GT(long_skips, 100u);  // the index was asked, not only the first modules walked
 
   const auto ignore_b = ignoring("B");
-  for (const std::string& text : {"A", "[ B ] C", "B [ C ] A", "[ A [ B ] ] D", "A ] C", "[ [ A ] B ] C"})
+  for (const char* text : {"A", "[ B ] C", "B [ C ] A", "[ A [ B ] ] D", "A ] C", "[ [ A ] B ] C"})
     for (const std::vector<std::uint8_t>* skip : {static_cast<const std::vector<std::uint8_t>*>(nullptr), &ignore_b}) {
       const std::vector<ModuleId> p = pattern(text);
       const int n = static_cast<int>(p.size());
@@ -386,10 +388,14 @@ TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
         const std::uint8_t* table = skip ? skip->data() : nullptr;
         const bool r = match_right_context(walked, starts[k], p.data(), n, table, by_walk.data());
         ASSERT_EQ(match_right_context(indexed, starts[k], p.data(), n, table, by_index.data()), r) << text << k;
-        if (r) ASSERT_EQ(by_index, by_walk) << text << k;
+        if (r) {
+          ASSERT_EQ(by_index, by_walk) << text << k;
+        }
         const bool l = match_left_context(walked, starts[k], p.data(), n, table, by_walk.data());
         ASSERT_EQ(match_left_context(indexed, starts[k], p.data(), n, table, by_index.data()), l) << text << k;
-        if (l) ASSERT_EQ(by_index, by_walk) << text << k;
+        if (l) {
+          ASSERT_EQ(by_index, by_walk) << text << k;
+        }
       }
     }
 }
