@@ -23,6 +23,7 @@
 #include "app/run_watchdog.h"
 #include "app/studio_command.h"
 #include "build/model_builder.h"
+#include "gpu/gpu_run.h"  // --gpu
 #include "io/output_file.h"
 #include "io/string_reader.h"
 #include "support/diagnostic.h"
@@ -90,6 +91,7 @@ struct RunOptions {
   int threads = 0;  // 0: one per core
   bool explain_parallel = false;
   bool keyed_random = false;
+  bool gpu = false;  // --gpu: point-subdivision L-systems derived on the GPU (gpu/gpu_run.h)
   sylva::RunLimits limits = sylva::default_run_limits();
   // Continuous time (docs/continuous-time.md): --time switches the run to it.
   sylva::TimedRunOptions timed;
@@ -176,6 +178,16 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   options.threads = r.threads;
   options.keyed_random = r.keyed_random;
   options.limits = r.limits;
+  // --gpu (gpu/gpu_run.h): the final string only, of a point-subdivision L-system.
+  if (r.gpu) {
+    const bool string_only = r.outputs.empty() && r.interpreted_path.empty() && r.turtle_path.empty() &&
+                             r.frames_dir.empty() && r.axiom_from.empty() && !r.interpreted_string &&
+                             r.timed.end_time == 0 && r.string_path != kNoString;
+    if (!string_only)
+      std::fprintf(stderr, "sylva: --gpu writes the final string only; deriving on the CPU\n");
+    else if (sylva::gpu::run_on_gpu(r.model, options, r.steps, r.string_path.empty() ? "-" : r.string_path))
+      return 0;
+  }
   sylva::Simulation simulation(r.model, options);
   if (r.explain_parallel) std::fputs(simulation.parallel_explanation().c_str(), stderr);
   std::optional<sylva::app::RunWatchdog> watchdog;
@@ -300,6 +312,10 @@ int main(int argc, char** argv) {
   run->add_flag("--cpfg-window-seeding", r.cpfg_window_seeding,
                 "cpfg models: choose among stochastic productions from seed: as cpfg's window does "
                 "(cpfg -g, and Sylva by default, ignore seed:)");
+  run->add_flag("--gpu", r.gpu,
+                "Derive a point-subdivision L-system (a closed or open curve of points, each replaced by "
+                "affine combinations of its neighbours: Chaikin, B-spline, four-point) on the GPU through "
+                "OpenGL; other models, and runs asking for more than the string, are derived on the CPU");
   run->add_option("--steps,-n", r.steps, "Number of derivation steps (default: the model's derivation length)")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
