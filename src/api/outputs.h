@@ -42,11 +42,11 @@ void write_frame(const std::string& dir, int number, const std::vector<std::stri
 
 // Runs the derivation again from the axiom and writes one PNG (or the
 // `formats` write_frame takes) per frame of the animation file (every step
-// when there is none) into `dir` as frame-NNNN.png, N being the step. The camera frames the last frame's
-// bounds unless the animation file asks to rescale between frames or the view
-// file gives a box. With "display on request: on" the frames are the first,
-// the last and the steps in which the model called DisplayFrame(). Frames
-// show the simulation's primary view. Returns the number of frames written.
+// when there is none) into `dir` as frame-NNNN.png, N being the step. The
+// camera frames the last frame's bounds unless the animation file asks to
+// rescale between frames or the view file gives a box. With "display on
+// request: on" the frames are the first, the last and the steps in which the
+// model called DisplayFrame(). Frames show the simulation's primary view. Returns the number of frames written.
 int write_frames(const std::string& dir, Simulation& simulation, const OutputOptions& options, int steps = -1,
                  const std::vector<std::string>& formats = {"png"});
 

@@ -1,6 +1,5 @@
 // Continuous time of a Simulation: a differential L-system's state
 // integrated between events (continuous/continuous_run.h).
-#include <cstdio>
 #include <string>
 
 #include "api/derivation_system.h"
@@ -8,16 +7,6 @@
 #include "support/diagnostic.h"
 
 namespace sylva {
-namespace {
-
-std::string time_text(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", t);
-  return text;
-}
-
-}  // namespace
-
 bool Simulation::continuous() const { return derivation_->has_continuous_rules(); }
 
 double Simulation::time() const { return continuous_run_ ? continuous_run_->time() : 0.0; }
@@ -41,7 +30,7 @@ void Simulation::advance_to(double t) {
     continuous_run_->advance_to(t);
   } catch (const continuous::ContinuousRunError& e) {
     throw ModelError(SourceLocation{model_path_, 0, 0},
-                     std::string(e.what()) + " (the run reached t = " + time_text(e.time()) + ")");
+                     std::string(e.what()) + " (the run reached t = " + continuous::time_text(e.time()) + ")");
   }
   check_string_limits();
   act_on_requests(RequestSource::Rules);

@@ -1,12 +1,11 @@
 #include "api/timed_run.h"
 
-#include <cmath>
 #include <charconv>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
-#include <cstdio>
+#include <utility>
 
 #include "api/outputs.h"
 #include "api/series_plot.h"
@@ -16,17 +15,17 @@
 namespace sylva {
 namespace {
 
-std::string number_text(double v) {
+void append_number(std::string& out, double v) {
   char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-  return std::string(text, end);
+  out.append(text, std::to_chars(text, text + sizeof text, v).ptr);
 }
 
-// The recorded modules' parameters at each sample, as CSV rows and as the
-// series of the plot.
+// The recorded modules' parameters at each sample, as CSV rows and, when a
+// plot is asked for, as its series.
 class ParameterRecorder {
  public:
-  ParameterRecorder(const Simulation& simulation, const std::vector<std::string>& names) {
+  ParameterRecorder(const Simulation& simulation, const std::vector<std::string>& names, bool keep_series)
+      : keep_series_(keep_series) {
     for (const std::string& name : names) {
       const std::optional<ModuleId> id = simulation.types().find(name);
       if (!id)
@@ -41,17 +40,18 @@ class ParameterRecorder {
   void sample(double t, const Simulation& simulation, std::string& rows) {
     const ModuleTypes& types = simulation.types();
     const StringView view = simulation.string().view(types);
-    const std::string time = number_text(t);
     std::size_t index = 0;
     for (std::size_t pos = view.begin; pos < view.end; pos = view.next(pos), ++index) {
       const ModuleId id = view.id_at(pos);
       if (!ids_.count(id)) continue;
       const std::vector<double> values = types.numbers(id, module_params(view.data, pos));
       for (std::size_t k = 0; k < values.size(); ++k) {
-        const std::string parameter = "p" + std::to_string(k + 1);
-        rows += time + ',' + std::to_string(index) + ',' + types.name(id) + ',' + parameter + ',' +
-                number_text(values[k]) + '\n';
-        PlotSeries& series = series_[types.name(id) + " " + parameter];
+        append_number(rows, t);
+        rows += ',' + std::to_string(index) + ',' + types.name(id) + ",p" + std::to_string(k + 1) + ',';
+        append_number(rows, values[k]);
+        rows += '\n';
+        if (!keep_series_) continue;
+        PlotSeries& series = series_[{types.name(id), k}];
         series.t.push_back(t);
         series.value.push_back(values[k]);
       }
@@ -60,16 +60,17 @@ class ParameterRecorder {
 
   std::vector<PlotSeries> series() const {
     std::vector<PlotSeries> all;
-    for (const auto& [name, s] : series_) {
+    for (const auto& [key, s] : series_) {
       all.push_back(s);
-      all.back().name = name;
+      all.back().name = key.first + " p" + std::to_string(key.second + 1);
     }
     return all;
   }
 
  private:
   std::set<ModuleId> ids_;
-  std::map<std::string, PlotSeries> series_;
+  bool keep_series_;
+  std::map<std::pair<std::string, std::size_t>, PlotSeries> series_;  // by module name and parameter
 };
 
 // Frames share one camera: the view file's, framing every sample's plant
@@ -112,7 +113,7 @@ void run_in_time(Simulation& simulation, const TimedRunOptions& options, const O
                      "--time needs a model with derivative or event rules (derivatives: / events:); "
                      "run a discrete model with --steps");
   const std::vector<double> times = sample_times(options.end_time, options.dt);
-  ParameterRecorder recorder(simulation, options.record);
+  ParameterRecorder recorder(simulation, options.record, !options.plot_path.empty());
   std::optional<geometry::ViewParameters> camera;
   if (!options.frames_dir.empty()) {
     check_frame_formats(options.frame_formats);

@@ -16,8 +16,8 @@
 
 #include "api/outputs.h"
 #include "api/reference_command_line.h"
-#include "api/timed_run.h"
 #include "api/simulation.h"
+#include "api/timed_run.h"
 #include "api/verify_string.h"
 #include "app/cache_command.h"
 #include "app/run_watchdog.h"

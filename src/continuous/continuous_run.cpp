@@ -8,12 +8,6 @@
 namespace sylva::continuous {
 namespace {
 
-std::string at_time(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", t);
-  return text;
-}
-
 // The largest margin: it crosses zero where the first condition starts to hold.
 double largest_margin(const std::vector<EventReading>& readings) {
   double m = -std::numeric_limits<double>::infinity();
@@ -137,13 +131,11 @@ void ContinuousRun::settle_events() {
     system_.read_events(readings_);
     if (std::none_of(readings_.begin(), readings_.end(), [](const EventReading& r) { return r.holds; })) return;
     if (round == settings_.max_event_rounds)
-      throw ContinuousRunError(time_, "events keep firing at t = " + at_time(time_) + ": after " +
+      throw ContinuousRunError(time_, "events keep firing at t = " + time_text(time_) + ": after " +
                                           std::to_string(round) +
                                           " rounds an event's condition still holds; its production must "
                                           "take the module out of the condition (or remove it)");
-    events_fired_ += system_.fire_events();
-    system_.gather(y_);
-    system_.set_state(time_, y_);
+    events_fired_ += system_.fire_events();  // the new state, which restart_integrator gathers
   }
 }
 

@@ -39,7 +39,7 @@ class ContinuousSystem {
   // The event conditions at the state set last, in a fixed order until fire_events().
   virtual void read_events(std::vector<EventReading>& readings) = 0;
   // Applies the productions of the events that hold at the state set last;
-  // returns how many were applied.
+  // returns how many were applied. What they produce is the state set now.
   virtual std::size_t fire_events() = 0;
 };
 

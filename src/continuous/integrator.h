@@ -70,4 +70,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, 
 // "rk4", "rk45" or "cvode"; throws std::invalid_argument naming the choices.
 Method method_named(const std::string& name);
 
+// A time as it reads in messages: short, but enough digits to tell close
+// instants apart.
+std::string time_text(double t);
+
 }  // namespace sylva::continuous

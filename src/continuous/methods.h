@@ -20,10 +20,6 @@ bool all_finite(std::span<const double> values);
 // step that produced the bad values.
 [[noreturn]] void throw_not_finite(double time);
 
-// A double as it reads in messages: short, but enough digits to tell close
-// instants apart.
-std::string time_text(double t);
-
 // Throws std::invalid_argument unless `t_limit` lies ahead of `time`.
 void check_limit(double time, double t_limit);
 

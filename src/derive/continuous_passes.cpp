@@ -28,9 +28,10 @@ void Derivation::map_state() {
     const std::span<const abi::ParamField> params = types_.params(id);
     largest = std::max(largest, params.size());
     StateModule module{pos, static_cast<std::uint32_t>(state_slots_.size()), 0};
-    for (const abi::ParamField& p : params) {
+    for (std::uint32_t k = 0; k < params.size(); ++k) {
+      const abi::ParamField& p = params[k];
       if (!p.type || (p.type->kind != abi::ParamKind::kFloat && p.type->kind != abi::ParamKind::kDouble)) continue;
-      state_slots_.push_back({pos + sizeof(ModuleId) + p.offset, p.type->kind == abi::ParamKind::kDouble});
+      state_slots_.push_back({pos + sizeof(ModuleId) + p.offset, k, p.type->kind == abi::ParamKind::kDouble});
       ++module.slots;
     }
     state_modules_.push_back(module);
@@ -73,19 +74,13 @@ void Derivation::evaluate_rates(std::span<double> dy) {
   std::fill(dy.begin(), dy.end(), 0.0);
   const StringView src = current_view();
   for (const StateModule& module : state_modules_) {
-    const ModuleId id = src.id_at(module.pos);
     std::fill(rates_.begin(), rates_.end(), 0.0);
     std::size_t consumed = 0;
     if (!apply_forward(RuleKind::Derivative, src, module.pos, probe_out_, probe_out_, true, &consumed)) continue;
     // Rates are written by parameter index; the state holds the float and
-    // double parameters only, in the same order.
-    std::uint32_t slot = module.first_slot;
-    const std::span<const abi::ParamField> params = types_.params(id);
-    for (std::size_t k = 0; k < params.size(); ++k) {
-      const abi::ParamField& p = params[k];
-      if (!p.type || (p.type->kind != abi::ParamKind::kFloat && p.type->kind != abi::ParamKind::kDouble)) continue;
-      dy[slot++] = rates_[k];
-    }
+    // double parameters only.
+    for (std::uint32_t s = module.first_slot; s < module.first_slot + module.slots; ++s)
+      dy[s] = rates_[state_slots_[s].param];
   }
 }
 

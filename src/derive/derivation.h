@@ -279,7 +279,8 @@ class Derivation {
   // with derivative rules and their continuous parameters' bytes; the
   // modules with event rules.
   struct StateSlot {
-    std::size_t offset;  // in string_'s bytes
+    std::size_t offset;   // in string_'s bytes
+    std::uint32_t param;  // the parameter's index: where a derivative rule writes its rate
     bool is_double;
   };
   struct StateModule {

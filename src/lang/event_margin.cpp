@@ -3,21 +3,19 @@
 namespace sylva::lang {
 namespace {
 
-bool opens(const Token& t) { return t.is_punct("(") || t.is_punct("[") || t.is_punct("{"); }
-bool closes(const Token& t) { return t.is_punct(")") || t.is_punct("]") || t.is_punct("}"); }
-
 class MarginBuilder {
  public:
   explicit MarginBuilder(const Code& c) : c_(c) {}
 
   void margin(std::size_t b, std::size_t e) {
     while (wrapped_in_parentheses(b, e)) ++b, --e;
-    if (const std::size_t at = top_level(b, e, {"||"}); at != e) return combine("::std::max", b, at, e);
-    if (const std::size_t at = top_level(b, e, {"&&"}); at != e) return combine("::std::min", b, at, e);
+    if (const std::size_t at = top_level(b, e, {"||"}).last; at != e) return combine("::std::max", b, at, e);
+    if (const std::size_t at = top_level(b, e, {"&&"}).last; at != e) return combine("::std::min", b, at, e);
     // One comparison alone: with several (`<` of a template argument, a
     // chain) or a `?:` the margin would not be what the condition says.
-    if (const std::size_t at = top_level(b, e, {">=", ">", "<=", "<"});
-        at != e && at != b && at + 1 != e && count_top_level(b, e, {">=", ">", "<=", "<", "?"}) == 1) {
+    if (const TopLevel found = top_level(b, e, {">=", ">", "<=", "<", "?"});
+        found.count == 1 && found.last != b && found.last + 1 != e && !c_[found.last].is_punct("?")) {
+      const std::size_t at = found.last;
       const bool greater = c_[at].text[0] == '>';
       difference(greater ? TokenRun{b, at} : TokenRun{at + 1, e}, greater ? TokenRun{at + 1, e} : TokenRun{b, at});
       return;
@@ -34,38 +32,28 @@ class MarginBuilder {
     if (e - b < 2 || !c_[b].is_punct("(") || !c_[e - 1].is_punct(")")) return false;
     int depth = 0;
     for (std::size_t k = b; k < e; ++k) {
-      if (opens(c_[k])) ++depth;
-      if (closes(c_[k]) && --depth == 0 && k + 1 != e) return false;  // `(a) < (b)`
+      if (is_open(c_[k])) ++depth;
+      if (is_close(c_[k]) && --depth == 0 && k + 1 != e) return false;  // `(a) < (b)`
     }
     return true;
   }
 
-  // The last operator of `ops` outside brackets in [b, e) (the last, so that
-  // a chain splits left-associatively), or e.
-  std::size_t top_level(std::size_t b, std::size_t e, std::initializer_list<const char*> ops) const {
+  // The operators of `ops` outside brackets in [b, e): the last (so that a
+  // chain splits left-associatively; e if none) and how many.
+  struct TopLevel {
+    std::size_t last, count;
+  };
+  TopLevel top_level(std::size_t b, std::size_t e, std::initializer_list<const char*> ops) const {
     int depth = 0;
-    std::size_t found = e;
+    TopLevel found{e, 0};
     for (std::size_t k = b; k < e; ++k) {
-      if (opens(c_[k])) ++depth;
-      if (closes(c_[k])) --depth;
+      if (is_open(c_[k])) ++depth;
+      if (is_close(c_[k])) --depth;
       if (depth != 0) continue;
       for (const char* op : ops)
-        if (c_[k].is_punct(op)) found = k;
+        if (c_[k].is_punct(op)) found = {k, found.count + 1};
     }
     return found;
-  }
-
-  std::size_t count_top_level(std::size_t b, std::size_t e, std::initializer_list<const char*> ops) const {
-    int depth = 0;
-    std::size_t count = 0;
-    for (std::size_t k = b; k < e; ++k) {
-      if (opens(c_[k])) ++depth;
-      if (closes(c_[k])) --depth;
-      if (depth != 0) continue;
-      for (const char* op : ops)
-        if (c_[k].is_punct(op)) ++count;
-    }
-    return count;
   }
 
   void combine(const char* function, std::size_t b, std::size_t at, std::size_t e) {

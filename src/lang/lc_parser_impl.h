@@ -17,9 +17,6 @@ namespace sylva::lang::detail {
 
 using abi::RuleKind;
 
-inline bool is_open(const Token& t) { return t.is_punct("(") || t.is_punct("[") || t.is_punct("{"); }
-inline bool is_close(const Token& t) { return t.is_punct(")") || t.is_punct("]") || t.is_punct("}"); }
-
 class LcParser {
  public:
   LcParser(const TokenStream& stream, const std::string& main_file);

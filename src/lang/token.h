@@ -33,6 +33,11 @@ struct Token {
   bool is_ident() const { return kind == TokenKind::Identifier; }
 };
 
+// Brackets of any kind, for code taken as it stands up to a delimiter
+// outside them.
+inline bool is_open(const Token& t) { return t.is_punct("(") || t.is_punct("[") || t.is_punct("{"); }
+inline bool is_close(const Token& t) { return t.is_punct(")") || t.is_punct("]") || t.is_punct("}"); }
+
 struct TokenStream {
   std::vector<std::string> files;
   std::vector<Token> tokens;  // ends with an End token

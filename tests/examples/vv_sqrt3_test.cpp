@@ -22,91 +22,10 @@
 #include <utility>
 #include <vector>
 
-#include "examples/example_strings.h"
-#include "test_support.h"
+#include "examples/vv_meshes.h"
 
 namespace sylva::test::examples {
 namespace {
-
-using P = std::array<double, 3>;
-P operator+(P a, P b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-P operator-(P a, P b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P operator*(double k, P a) { return {k * a[0], k * a[1], k * a[2]}; }
-P cross(P a, P b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double dot(P a, P b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(P a) { return std::sqrt(dot(a, a)); }
-
-// A triangle mesh as drawn: distinct points and faces of point indices.
-struct TriMesh {
-  std::vector<P> points;
-  std::vector<std::array<int, 3>> faces;
-  int non_triangles = 0;
-
-  std::set<std::pair<int, int>> edges() const {
-    std::set<std::pair<int, int>> out;
-    for (const auto& f : faces)
-      for (int i = 0; i < 3; ++i) out.insert(std::minmax(f[i], f[(i + 1) % 3]));
-    return out;
-  }
-  // The faces on each edge (indices into faces), one per side.
-  std::map<std::pair<int, int>, std::vector<int>> sides() const {
-    std::map<std::pair<int, int>, std::vector<int>> out;
-    for (std::size_t k = 0; k < faces.size(); ++k)
-      for (int i = 0; i < 3; ++i)
-        out[std::minmax(faces[k][i], faces[k][(i + 1) % 3])].push_back(static_cast<int>(k));
-    return out;
-  }
-  std::vector<std::set<int>> neighbours() const {
-    std::vector<std::set<int>> out(points.size());
-    for (const auto& [a, b] : edges()) out[a].insert(b), out[b].insert(a);
-    return out;
-  }
-};
-
-// "(x,y,z)" as printed for a V3d.
-P read_point(const std::string& text) {
-  const std::vector<std::string> c = split_top_level(text.substr(1, text.size() - 2));
-  EXPECT_EQ(c.size(), 3u) << text;
-  return {number(c.at(0)), number(c.at(1)), number(c.at(2))};
-}
-
-TriMesh drawn_mesh(const std::vector<Module>& s) {
-  TriMesh m;
-  std::map<P, int> index;
-  std::vector<int> face;
-  P at{0, 0, 0};
-  for (const Module& module : s) {
-    if (module.name == "SP") face.clear();
-    if (module.name == "MoveTo3d") at = read_point(module.params.at(0));
-    if (module.name == "PP") {
-      const auto [it, fresh] = index.emplace(at, static_cast<int>(m.points.size()));
-      if (fresh) m.points.push_back(at);
-      face.push_back(it->second);
-    }
-    if (module.name == "EP") {
-      if (face.size() == 3) m.faces.push_back({face[0], face[1], face[2]});
-      else ++m.non_triangles;
-    }
-  }
-  return m;
-}
-
-// The drawn mesh at levels 0..levels (one derivation step per level), and
-// what the model printed.
-struct Levels {
-  std::vector<TriMesh> meshes;
-  std::string messages;
-};
-Levels run_levels(int levels, std::vector<std::string> defines = {}) {
-  Stepper run(example_path("vv-sqrt3/vv-sqrt3.l"), std::move(defines));
-  Levels out;
-  for (int k = 0; k <= levels; ++k) {
-    if (k > 0) run.step();
-    out.meshes.push_back(drawn_mesh(parse_modules(run.interpreted())));
-  }
-  out.messages = run.messages;
-  return out;
-}
 
 // The drawn point nearest to p, and how far it is.
 std::pair<int, double> nearest(const std::vector<P>& points, const P& p) {
@@ -144,7 +63,7 @@ TriMesh sqrt3_step(const TriMesh& m) {
 }
 
 TEST(VvSqrt3Test, CountsEulerAndClosedSurface) {
-  const Levels run = run_levels(4);
+  const Levels run = run_levels("vv-sqrt3", 4);
   const long V0 = 12, E0 = 30, F0 = 20;
   long p = 1;  // 3^n
   for (std::size_t n = 0; n < run.meshes.size(); ++n, p *= 3) {
@@ -170,7 +89,7 @@ TEST(VvSqrt3Test, CountsEulerAndClosedSurface) {
 
 TEST(VvSqrt3Test, PointsAndFacesFollowKobbeltsRules) {
   // Squashed along z, so that the corners are not all alike.
-  const Levels run = run_levels(4, {"STRETCH=0.6"});
+  const Levels run = run_levels("vv-sqrt3", 4, {"STRETCH=0.6"});
   for (std::size_t n = 0; n + 1 < run.meshes.size(); ++n) {
     const std::string what = "level " + std::to_string(n + 1);
     const TriMesh want = sqrt3_step(run.meshes[n]);

@@ -22,91 +22,10 @@
 #include <utility>
 #include <vector>
 
-#include "examples/example_strings.h"
-#include "test_support.h"
+#include "examples/vv_meshes.h"
 
 namespace sylva::test::examples {
 namespace {
-
-using P = std::array<double, 3>;
-P operator+(P a, P b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-P operator-(P a, P b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P operator*(double k, P a) { return {k * a[0], k * a[1], k * a[2]}; }
-P cross(P a, P b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double norm(P a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
-// A triangle mesh as drawn: distinct points and faces of point indices.
-struct TriMesh {
-  std::vector<P> points;
-  std::vector<std::array<int, 3>> faces;
-  int non_triangles = 0;
-
-  std::set<std::pair<int, int>> edges() const {
-    std::set<std::pair<int, int>> out;
-    for (const auto& f : faces)
-      for (int i = 0; i < 3; ++i) out.insert(std::minmax(f[i], f[(i + 1) % 3]));
-    return out;
-  }
-  // The corners opposite each edge, one per face on it.
-  std::map<std::pair<int, int>, std::vector<int>> opposite() const {
-    std::map<std::pair<int, int>, std::vector<int>> out;
-    for (const auto& f : faces)
-      for (int i = 0; i < 3; ++i) out[std::minmax(f[i], f[(i + 1) % 3])].push_back(f[(i + 2) % 3]);
-    return out;
-  }
-  std::vector<std::set<int>> neighbours() const {
-    std::vector<std::set<int>> out(points.size());
-    for (const auto& [a, b] : edges()) out[a].insert(b), out[b].insert(a);
-    return out;
-  }
-};
-
-// "(x,y,z)" as printed for a V3d.
-P read_point(const std::string& text) {
-  const std::vector<std::string> c = split_top_level(text.substr(1, text.size() - 2));
-  EXPECT_EQ(c.size(), 3u) << text;
-  return {number(c.at(0)), number(c.at(1)), number(c.at(2))};
-}
-
-TriMesh drawn_mesh(const std::vector<Module>& s) {
-  TriMesh m;
-  std::map<P, int> index;
-  std::vector<int> face;
-  P at{0, 0, 0};
-  for (const Module& module : s) {
-    if (module.name == "SP") face.clear();
-    if (module.name == "MoveTo3d") at = read_point(module.params.at(0));
-    if (module.name == "PP") {
-      const auto [it, fresh] = index.emplace(at, static_cast<int>(m.points.size()));
-      if (fresh) m.points.push_back(at);
-      face.push_back(it->second);
-    }
-    if (module.name == "EP") {
-      if (face.size() == 3) m.faces.push_back({face[0], face[1], face[2]});
-      else ++m.non_triangles;
-    }
-  }
-  return m;
-}
-
-std::string model(const std::string& name) { return example_path(name + "/" + name + ".l"); }
-
-// The drawn mesh at levels 0..levels (one derivation step per level), and
-// what the model printed.
-struct Levels {
-  std::vector<TriMesh> meshes;
-  std::string messages;
-};
-Levels run_levels(const std::string& name, int levels, std::vector<std::string> defines = {}) {
-  Stepper run(model(name), std::move(defines));
-  Levels out;
-  for (int k = 0; k <= levels; ++k) {
-    if (k > 0) run.step();
-    out.meshes.push_back(drawn_mesh(parse_modules(run.interpreted())));
-  }
-  out.messages = run.messages;
-  return out;
-}
 
 // V = v0 4^n + 2 ... for a subdivision that splits each triangle in four.
 void expect_counts(const Levels& run, const std::string& name, long faces0) {

@@ -67,7 +67,7 @@ inline std::string text(const std::vector<lang::PatternModule>& part) {
 }
 
 // A body part by part: code as its tokens, "produce A(x)", "nproduce B",
-// "propensity <code> produce <modules>", "InLeftContext(A(x))", joined by " | ".
+// "propensity <code> produce <modules>", "InLeftContext(A(x))", "d(x) = <code>", joined by " | ".
 inline std::string text(const lang::Body& body) {
   static const char* contexts[] = {"InNewLeftContext", "InLeftContext", "", "InRightContext", "InNewRightContext"};
   auto modules = [](const lang::BodyPart& part) { return part.modules.empty() ? "" : " " + text(part.modules); };
@@ -82,6 +82,7 @@ inline std::string text(const lang::Body& body) {
         piece = "propensity " + text(part.code) + " produce" + modules(part);
         break;
       case lang::BodyPart::kInContext: piece = std::string(contexts[part.context]) + "(" + text(part.modules) + ")"; break;
+      case lang::BodyPart::kRate: piece = "d(" + part.rate_of + ") = " + text(part.code); break;
     }
     out += (out.empty() ? "" : " | ") + piece;
   }
