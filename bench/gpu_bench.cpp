@@ -17,8 +17,10 @@
 #include <string>
 
 #include "api/simulation.h"
+#include "gpu/lsystem_glsl.h"
 #include "gpu/stencil_deriver.h"
 #include "gpu/stencil_probe.h"
+#include "io/string_reader.h"
 
 namespace {
 
@@ -91,5 +93,111 @@ void sizes(benchmark::internal::Benchmark* b) {
 BENCHMARK(GpuChaikin)->Apply(sizes);
 BENCHMARK(CpuStencilChaikin)->Apply(sizes);
 BENCHMARK(EngineChaikin)->Apply(sizes);
+
+// ---- algorithm 2 (gpu/lsystem_glsl.h): adaptive subdivision ----------------
+// examples/adaptive-subdivision (L-system 5, T = 0.05): <curves> copies of the
+// example's open curve (E, 8 points, E) side by side in one string, 5 steps;
+// each curve ends with 220 modules: 455 curves ≈ 10^5 modules, 4545 ≈ 10^6,
+// 45454 ≈ 10^7.
+//
+//   GpuAdaptive/<curves>        the GL L-system deriver: per step fragment
+//                               program 1 (productions), the scan-add (2
+//                               values per pass), the total read back,
+//                               fragment program 3 (successors by binary
+//                               search); the final string read back.
+//   GpuAdaptiveRadix8/<curves>  the same, the scan summing 8 values a pass.
+//   CpuInterpreterAdaptive/<curves>  the translated productions interpreted
+//                               on the CPU (the check, not a fast path).
+//   EngineAdaptive/<curves>     the engine (compiled productions, one thread).
+// Translation and the model's compile are done once, untimed.
+
+const std::string& adaptive() {
+  static const std::string path = std::string(SYLVA_EXAMPLES_DIR) + "/adaptive-subdivision/adaptive-subdivision.l";
+  return path;
+}
+
+const sylva::gpu::LsystemTranslation& adaptive_translation() {
+  static const sylva::gpu::LsystemTranslation translation = [] {
+    sylva::Simulation simulation(adaptive(), gpu_bench_options());
+    return sylva::gpu::translate_lsystem(simulation, gpu_bench_options());
+  }();
+  return translation;
+}
+
+sylva::gpu::GpuString adaptive_curves(long curves) {
+  const auto& one = adaptive_translation().axiom;
+  sylva::gpu::GpuString many;
+  for (long c = 0; c < curves; ++c) {
+    many.types.insert(many.types.end(), one.types.begin(), one.types.end());
+    many.params.insert(many.params.end(), one.params.begin(), one.params.end());
+  }
+  return many;
+}
+
+constexpr int kAdaptiveSteps = 5;
+
+void adaptive_bench(benchmark::State& state, sylva::gpu::LsystemDeriver& deriver) {
+  const auto& t = adaptive_translation();
+  if (!t.in_class) {
+    state.SkipWithError(t.reason.c_str());
+    return;
+  }
+  const auto string = adaptive_curves(state.range(0));
+  std::size_t modules = 0;
+  for (auto _ : state) {
+    auto derived = deriver.derive(t.program, string, kAdaptiveSteps);
+    modules = derived.size();
+    benchmark::DoNotOptimize(derived.types.data());
+  }
+  state.counters["modules"] = static_cast<double>(modules);
+  state.counters["Mmod/s"] =
+      benchmark::Counter(static_cast<double>(modules) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void GpuAdaptive(benchmark::State& state) {
+  auto& gl = sylva::gpu::gl_lsystem_deriver();
+  gl.set_layout(0, 2);
+  adaptive_bench(state, gl);
+}
+
+void GpuAdaptiveRadix8(benchmark::State& state) {
+  auto& gl = sylva::gpu::gl_lsystem_deriver();
+  gl.set_layout(0, 8);
+  adaptive_bench(state, gl);
+  gl.set_layout(0, 2);
+}
+
+void CpuInterpreterAdaptive(benchmark::State& state) {
+  sylva::gpu::CpuLsystemDeriver cpu;
+  adaptive_bench(state, cpu);
+}
+
+void EngineAdaptive(benchmark::State& state) {
+  const auto& t = adaptive_translation();
+  sylva::Simulation simulation(adaptive(), gpu_bench_options());
+  const std::string text = sylva::gpu::format_gpu_string(t.program, adaptive_curves(state.range(0)), false);
+  const sylva::ModuleString start = sylva::io::parse_string(text, simulation.types(), "<curves>");
+  std::size_t modules = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    simulation.rewind();
+    simulation.start_from(start);
+    state.ResumeTiming();
+    simulation.run(kAdaptiveSteps);
+    modules = simulation.string().count_modules(simulation.types());
+  }
+  state.counters["modules"] = static_cast<double>(modules);
+  state.counters["Mmod/s"] =
+      benchmark::Counter(static_cast<double>(modules) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void curve_counts(benchmark::internal::Benchmark* b) {
+  b->Arg(455)->Arg(4545)->Arg(45454)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+BENCHMARK(GpuAdaptive)->Apply(curve_counts);
+BENCHMARK(GpuAdaptiveRadix8)->Apply(curve_counts);
+BENCHMARK(CpuInterpreterAdaptive)->Apply(curve_counts);
+BENCHMARK(EngineAdaptive)->Apply(curve_counts);
 
 }  // namespace

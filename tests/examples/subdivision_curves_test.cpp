@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "examples/example_strings.h"
+#include "examples/plane_points.h"
 #include "test_support.h"
 
 namespace sylva::test::examples {
@@ -28,44 +29,8 @@ std::string model(const std::string& folder, const std::string& name) {
 }
 const std::string kBspline = "cubic-bspline-subdivision", kFourPoint = "four-point";
 
-struct Pt {
-  double x = 0, y = 0;
-};
-Pt operator+(Pt a, Pt b) { return {a.x + b.x, a.y + b.y}; }
-Pt operator-(Pt a, Pt b) { return {a.x - b.x, a.y - b.y}; }
-Pt operator*(double k, Pt a) { return {k * a.x, k * a.y}; }
-double dist(Pt a, Pt b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-// "(x,y)" as printed for a V2d.
-Pt read_pt(const std::string& text) {
-  const std::vector<std::string> c = split_top_level(text.substr(1, text.size() - 2));
-  EXPECT_EQ(c.size(), 2u) << text;
-  return {number(c.at(0)), number(c.at(1))};
-}
-
-// The first parameter of every module named `name`, in string order.
-std::vector<Pt> points(const std::vector<Module>& s, const std::string& name = "P") {
-  std::vector<Pt> out;
-  for (const Module& m : s)
-    if (m.name == name) out.push_back(read_pt(m.params.at(0)));
-  return out;
-}
 std::vector<Pt> points_after(const std::string& m, int steps, std::vector<std::string> defines = {}) {
   return points(parse_modules(derive_with(m, steps, std::move(defines))));
-}
-
-// A dense matrix, rows of weights on the old points.
-using Matrix = std::vector<std::vector<double>>;
-
-std::vector<Pt> multiply(const Matrix& m, const std::vector<Pt>& p) {
-  std::vector<Pt> out;
-  for (const std::vector<double>& row : m) {
-    EXPECT_EQ(row.size(), p.size());
-    Pt q;
-    for (std::size_t c = 0; c < row.size(); ++c) q = q + row[c] * p[c];
-    out.push_back(q);
-  }
-  return out;
 }
 
 // x[(s + r) mod size]: the string of a mapping that starts r rows down.
