@@ -8,11 +8,14 @@ PACKAGES=(
   libgtest-dev libgmock-dev   # tests
   libbenchmark-dev            # bench/
   pkg-config libcairo2-dev libosmesa6-dev libpng-dev   # vector drawings, offscreen OpenGL, PNG
+  libssl-dev                                           # SHA-256 in provenance records (libcrypto)
   libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
   libgraphicsmagick1-dev                               # texture images (PNG, SGI .rgb ...)
   libassimp-dev poppler-utils ghostscript              # tests read meshes, PDFs and PostScript back
   libcpp-httplib-dev                                   # the studio's web server
   libsundials-dev libeigen3-dev                        # stiff integration (CVODE), linear algebra in tests
+  libtomlplusplus-dev                                  # experiment plans (TOML)
+  libopenmpi-dev openmpi-bin                           # experiments on a cluster (MPI; mpirun in the tests)
   chromium                                             # the studio's browser tests (headless)
   clang libclang-rt-14-dev                             # the sanitizer build and the fuzz targets (libFuzzer)
 )

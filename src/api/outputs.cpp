@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "api/provenance.h"
 #include "export/mesh_writers.h"
 #include "geometry/back_sides.h"
 #include "geometry/tessellation.h"
@@ -51,8 +52,10 @@ io::ImageSettings image_settings(const io::ViewFile& view, const Simulation& s) 
 
 void write_image(const std::string& path, const geometry::Scene& scene, const Simulation& s,
                  const geometry::ViewParameters& view, const OutputOptions& options) {
-  io::write_png(path, io::render_image(scene, s.inputs().palette, view, image_settings(view_file_or_default(s), s),
-                                       options.width, options.height));
+  io::write_png(path,
+                io::render_image(scene, s.inputs().palette, view, image_settings(view_file_or_default(s), s),
+                                 options.width, options.height),
+                provenance_json(s));
 }
 
 geometry::TriangleMesh mesh_of(const geometry::Scene& scene, const geometry::TessellationOptions& tessellation) {
@@ -102,21 +105,22 @@ void write_output(const std::string& path, const geometry::Scene& plant, const S
   const io::ViewFile& view = view_file_or_default(simulation);
   const geometry::Palette& palette = simulation.inputs().palette;
   const Format f = format_of(path);
+  const std::string provenance = provenance_json(simulation);  // "" without a ProvenanceScope
   switch (f) {
     case Format::Obj:
     case Format::Ply:
     case Format::Glb: {
       const geometry::TriangleMesh mesh = export_mesh(scene, simulation);
-      if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types());
-      else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types());
-      else io::write_glb(path, mesh, palette, simulation.types(), texture_images(view, simulation));
+      if (f == Format::Obj) io::write_obj(path, mesh, palette, simulation.types(), provenance);
+      else if (f == Format::Ply) io::write_ply(path, mesh, palette, simulation.types(), provenance);
+      else io::write_glb(path, mesh, palette, simulation.types(), texture_images(view, simulation), provenance);
       break;
     }
     case Format::Vector:
       // Round caps join segments without notches; a view file may ask for lpfg's butt caps.
       io::write_vector_drawing(path, scene, palette, view.view(view_id), view.render.line_style, options.width,
                                options.height, &simulation.types(),
-                               simulation.inputs().view ? view.render.ps_linecap : 1);
+                               simulation.inputs().view ? view.render.ps_linecap : 1, provenance);
       break;
     case Format::Png:
       write_image(path, scene, simulation, view.view(view_id), options);
@@ -142,6 +146,7 @@ void write_frame(const std::string& dir, int number, const std::vector<std::stri
   for (const std::string& format : formats) {
     if (format == kStringFrame) {
       simulation.write_string(path + format);
+      write_string_provenance(path + format, simulation);  // FILE.provenance.json, when recorded
       continue;
     }
     if (!scene) scene = simulation.scene();

@@ -19,7 +19,10 @@ void check_output_path(const std::string& path);
 
 // Writes `scene` (the simulation's current string drawn by the turtle, from
 // Simulation::scene(), computed once for all outputs) to `path`, seen by the
-// camera of view `view` of the view file.
+// camera of view `view` of the view file. While a ProvenanceScope of the
+// simulation lives (api/provenance.h), every file written here, by
+// write_frame and by write_frames carries its run record (a string frame in
+// a sidecar FILE.provenance.json).
 void write_output(const std::string& path, const geometry::Scene& scene, const Simulation& simulation,
                   const OutputOptions& options, int view = 0);
 

@@ -158,7 +158,7 @@ bool finite_point(const PlotSeries& s, std::size_t i) { return std::isfinite(s.t
 }  // namespace
 
 void write_series_plot(const std::string& path, const std::vector<PlotSeries>& series, const std::string& title,
-                       int width, int height) {
+                       int width, int height, const std::string& x_label) {
   const SourceLocation where{path, 0, 0};
   if (width < kMinWidth || height < kMinHeight || width > kMaxSize || height > kMaxSize)
     throw ModelError(where, "a plot of " + std::to_string(width) + " x " + std::to_string(height) +
@@ -285,7 +285,7 @@ void write_series_plot(const std::string& path, const std::vector<PlotSeries>& s
     d.shapes.push_back(line({x, b}, {x, b + kTickLength}, kInk));
     d.shapes.push_back(text(t_ticks.labels[i], x, b + kTickLength + 10, 0.5f));
   }
-  d.shapes.push_back(text("t", (left + right) / 2, b + kTickLength + 30, 0.5f));
+  d.shapes.push_back(text(x_label, (left + right) / 2, b + kTickLength + 30, 0.5f));
   if (drawn < shown.size())
     d.shapes.push_back(text("+" + std::to_string(shown.size() - drawn) + " more series not shown", left,
                             static_cast<float>(height) - kNoticeRow / 2 - 2));

@@ -1,4 +1,5 @@
-// A quick look at recorded time series (`sylva run --record M --plot out.png`):
+// A quick look at recorded time series (`sylva run --record M --plot out.png`)
+// and at an experiment's measure against a parameter (`[plot]` of a plan):
 // the recorded module parameters drawn against time as dots, as small
 // multiples: one panel per parameter, stacked, each with its own value axis
 // and named in its own colour, over one shared time axis, under a title.
@@ -33,6 +34,6 @@ struct PlotSeries {  // one parameter of one module name, e.g. "Cell p1"
 // value differ in length, and when the size is under 320 x 200 or over 16384
 // either way.
 void write_series_plot(const std::string& path, const std::vector<PlotSeries>& series, const std::string& title,
-                       int width = 900, int height = 600);
+                       int width = 900, int height = 600, const std::string& x_label = "t");
 
 }  // namespace sylva

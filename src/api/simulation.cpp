@@ -74,6 +74,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   control.inputs = answers_.get();
   control.input_query = &answer_input_query;
   control.cpfg_window_seeding = options.cpfg_window_seeding;
+  control.seed_fixed = options.seed.has_value();
+  control.seed = options.seed.value_or(0);
   requests_ = std::make_unique<ModelRequestQueue>();
   control.requests = requests_.get();
   control.request = &ModelRequestQueue::receive;

@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,9 @@ struct SimulationOptions {
   // ran() in rule bodies keyed by the module rather than lpfg's sequence:
   // the same string at any thread count, and such bodies run in parallel.
   bool keyed_random = false;
+  // The run's seed (abi::ControlState::seed): replicates of a stochastic
+  // model; unset, the model seeds itself as lpfg and cpfg do.
+  std::optional<long> seed = {};
 };
 
 // The size of images and drawings.

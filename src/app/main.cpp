@@ -20,6 +20,8 @@
 #include "api/timed_run.h"
 #include "api/verify_string.h"
 #include "app/cache_command.h"
+#include "app/experiment_command.h"
+#include "app/reproduce_command.h"  // --reproduce, and the record every output carries
 #include "app/run_watchdog.h"
 #include "app/studio_command.h"
 #include "build/model_builder.h"
@@ -91,6 +93,7 @@ struct RunOptions {
   int threads = 0;  // 0: one per core
   bool explain_parallel = false;
   bool keyed_random = false;
+  std::optional<long> seed;
   bool gpu = false;  // --gpu: point-subdivision L-systems derived on the GPU (gpu/gpu_run.h)
   sylva::RunLimits limits = sylva::default_run_limits();
   // Continuous time (docs/continuous-time.md): --time switches the run to it.
@@ -177,6 +180,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   options.cpfg_window_seeding = r.cpfg_window_seeding;
   options.threads = r.threads;
   options.keyed_random = r.keyed_random;
+  options.seed = r.seed;
   options.limits = r.limits;
   // --gpu (gpu/gpu_run.h): the final string only, of a point-subdivision L-system.
   if (r.gpu) {
@@ -203,6 +207,9 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     if (timed.dt == 0 && animation->time_step) timed.dt = *animation->time_step;
   }
   const bool in_time = timed.end_time > 0;
+  // Every output records what made it (api/provenance.h); destroyed before the simulation.
+  std::optional<sylva::ProvenanceScope> provenance;
+  if (!in_time) provenance.emplace(simulation, sylva::app::run_record(simulation, options, r.axiom_from, nullptr));
   if (in_time) {
     timed.frames_dir = r.frames_dir;
     timed.frame_formats = r.frame_formats;
@@ -211,6 +218,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     settings.integrator.method = sylva::continuous::method_named(r.integrator);
     settings.end_time = timed.end_time;
     simulation.set_continuous_settings(settings);
+    provenance.emplace(simulation, sylva::app::run_record(simulation, options, r.axiom_from, &settings));
     sylva::run_in_time(simulation, timed, r.output);
     if (o.build.verbose) {
       const auto counts = simulation.continuous_counts();
@@ -237,6 +245,7 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
     // cpfg's -h: the string after homomorphism.
     if (r.interpreted_string) simulation.write_interpreted_string(path, simulation.primary_view());
     else simulation.write_string(path);
+    sylva::write_string_provenance(path, simulation);  // PATH.provenance.json
   }
   return 0;
 }
@@ -309,6 +318,10 @@ int main(int argc, char** argv) {
          "the step and the module, so a stochastic model gives one string at any number of threads")
       ->check(CLI::IsMember({"lpfg", "keyed"}))
       ->type_name("MODE");
+  run->add_option("--seed", r.seed,
+                  "Start the random generators from SEED (ran(), SeedGillespie's, a cpfg model's seed: and srand()), "
+                  "passing over the model's own seeding, so replicates of a stochastic model differ")
+      ->type_name("SEED");
   run->add_flag("--cpfg-window-seeding", r.cpfg_window_seeding,
                 "cpfg models: choose among stochastic productions from seed: as cpfg's window does "
                 "(cpfg -g, and Sylva by default, ignore seed:)");
@@ -361,12 +374,23 @@ int main(int argc, char** argv) {
   run->add_option("--turtle", r.turtle_path,
                   "Write the turtle's commands for the final string to FILE or '-', one per line")
       ->type_name("FILE");
+  std::string reproduce_file;
+  run->add_option("--reproduce", reproduce_file,
+                  "Run again the run that wrote FILE (an output carrying a provenance record, a string's "
+                  "FILE.provenance.json): check that the model and input files are unchanged and that the string "
+                  "is the same (exit 0), say what differs (1), or that FILE has no record (2); docs/provenance.md")
+      ->type_name("FILE");
   add_build_options(*run, run_options);
   run->add_option("--compile-timeout", run_options.build.compile_timeout_seconds,
                   "Seconds the C++ compiler may take for the model before it is stopped (default: "
                   "$SYLVA_COMPILE_TIMEOUT or 600)")
       ->check(CLI::PositiveNumber)
       ->type_name("SECONDS");
+
+  CommonOptions experiment_build;
+  sylva::app::ExperimentCommandOptions experiment_options;
+  CLI::App* experiment = sylva::app::add_experiment_command(app, experiment_options);
+  add_build_options(*experiment, experiment_build);
 
   CommonOptions translate_options;
   std::string translate_model, translate_output = "-";
@@ -422,7 +446,7 @@ int main(int argc, char** argv) {
   try {
     std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
     app.parse(arguments);
-    if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run, studio or translate)");
+    if (app.get_subcommands().empty()) throw CLI::RequiredError("A command (run, experiment, studio or translate)");
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
@@ -432,9 +456,11 @@ int main(int argc, char** argv) {
   // The studio stops its worker and server on these signals itself.
   if (!*studio) sylva::interruption::install_handlers();
   try {
+    if (*run && !reproduce_file.empty()) return sylva::app::run_reproduce(reproduce_file, run_options.build);
     if (*run) return run_command(r, run_options);
     if (*studio) return sylva::app::run_studio(studio_options, studio_build.build);
     if (*cache) return sylva::app::run_cache_command(cache_options);
+    if (*experiment) return sylva::app::run_experiment_command(experiment_options, experiment_build.build);
     if (*translate) {
       sylva::io::write_output_file(translate_output,
                                    sylva::build::translate_model(translate_model, translate_options.build));

@@ -182,6 +182,7 @@ void Derivation::start() {
   c.step = 0;
   c.current_group = c.next_group = 0;
   c.gillespie_random = abi::kLpfgRandomState;  // every run starts as lpfg's first
+  if (c.seed_fixed) c.rand48 = c.gillespie_random = static_cast<std::uint64_t>(c.seed) & 0xFFFFFFFFULL;
   c.gillespie_time = 0;
   c.environment = true;
   steps_done_ = 0;

@@ -194,11 +194,17 @@ class GlbBuilder {
 }  // namespace
 
 std::string encode_glb(const geometry::TriangleMesh& mesh, const geometry::Palette& palette, const ModuleTypes& types,
-                       const std::vector<TextureImage>& textures) {
+                       const std::vector<TextureImage>& textures, const std::string& provenance) {
   static_assert(sizeof(Vec3) == 12, "positions are copied as packed float triples");
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "Sylva";
+  // Provenance (api/provenance.h): the run record's JSON, as a string.
+  if (!provenance.empty()) {
+    tinygltf::Value::Object asset_extras;
+    asset_extras["sylva:provenance"] = tinygltf::Value(provenance);
+    model.asset.extras = tinygltf::Value(std::move(asset_extras));
+  }
 
   MaterialIndex material_of;
   for (const auto* parts : {&mesh.parts, &mesh.line_parts})
@@ -267,8 +273,8 @@ std::string encode_glb(const geometry::TriangleMesh& mesh, const geometry::Palet
 }
 
 void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types, const std::vector<TextureImage>& textures) {
-  write_output_file(path, encode_glb(mesh, palette, types, textures));
+               const ModuleTypes& types, const std::vector<TextureImage>& textures, const std::string& provenance) {
+  write_output_file(path, encode_glb(mesh, palette, types, textures, provenance));
 }
 
 }  // namespace sylva::io

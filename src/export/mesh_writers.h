@@ -13,6 +13,11 @@
 //       colour, alpha from transparency); faces with `module_index` and
 //       `module_id`; pixel lines as the `edge` element, with the same two.
 //  GLB  see write_glb.
+//
+// `provenance`, when not empty, is the run record's one-line JSON
+// (api/provenance.h): OBJ `# sylva:provenance {json}` after the first
+// comment, PLY `comment sylva:provenance {json}` in the header, GLB
+// asset.extras["sylva:provenance"] (the JSON as a string).
 #pragma once
 
 #include <string>
@@ -26,9 +31,13 @@ namespace sylva::io {
 
 void write_obj(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
                const ModuleTypes& types);
+void write_obj(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types, const std::string& provenance);
 
 void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
                const ModuleTypes& types);
+void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types, const std::string& provenance);
 
 // One mesh in one node; the mesh has one primitive per colour index used
 // (triangles), and one per colour for pixel lines, each with the material
@@ -46,9 +55,10 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
 // material of their own whose base colour texture is that image, embedded
 // as PNG, with TEXCOORD_0 from the mesh's texture coordinates.
 void write_glb(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types, const std::vector<TextureImage>& textures = {});
+               const ModuleTypes& types, const std::vector<TextureImage>& textures = {},
+               const std::string& provenance = {});
 // The bytes write_glb writes.
 std::string encode_glb(const geometry::TriangleMesh& mesh, const geometry::Palette& palette, const ModuleTypes& types,
-                       const std::vector<TextureImage>& textures = {});
+                       const std::vector<TextureImage>& textures = {}, const std::string& provenance = {});
 
 }  // namespace sylva::io

@@ -79,10 +79,12 @@ void append_parts(std::string& out, const std::vector<MeshPart>& parts, const st
   }
 }
 
-std::string obj_text(const geometry::TriangleMesh& mesh, const ModuleTypes& types, const std::string& library) {
+std::string obj_text(const geometry::TriangleMesh& mesh, const ModuleTypes& types, const std::string& library,
+                     const std::string& provenance) {
   std::string out;
   out.reserve(mesh.positions.size() * 64 + mesh.indices.size() * 12 + (mesh.parts.size() + mesh.line_parts.size()) * 32);
   out += "# Sylva mesh: groups are Module_index (the module and its position in the string)\n";
+  if (!provenance.empty()) out += "# sylva:provenance " + provenance + "\n";  // api/provenance.h
   if (!library.empty()) out += "mtllib " + library + "\n";
   for (const auto* list : {&mesh.positions, &mesh.normals}) {
     const char* key = list == &mesh.positions ? "v" : "vn";
@@ -103,9 +105,9 @@ std::string obj_text(const geometry::TriangleMesh& mesh, const ModuleTypes& type
 }  // namespace
 
 void write_obj(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types) {
+               const ModuleTypes& types, const std::string& provenance) {
   if (path == "-") {
-    write_output_file(path, obj_text(mesh, types, ""));
+    write_output_file(path, obj_text(mesh, types, "", provenance));
     return;
   }
   namespace fs = std::filesystem;
@@ -121,11 +123,16 @@ void write_obj(const std::string& path, const geometry::TriangleMesh& mesh, cons
     throw ModelError(SourceLocation{path, 0, 0}, "material file " + library.string() + ": " + e.message());
   }
   try {
-    write_output_file(path, obj_text(mesh, types, library.filename().string()));
+    write_output_file(path, obj_text(mesh, types, library.filename().string(), provenance));
   } catch (...) {
     if (!library_existed) fs::remove(library, error);
     throw;
   }
+}
+
+void write_obj(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types) {
+  write_obj(path, mesh, palette, types, std::string());
 }
 
 }  // namespace sylva::io

@@ -30,7 +30,7 @@ std::uint8_t channel(float v) {
 }  // namespace
 
 void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
-               const ModuleTypes& types) {
+               const ModuleTypes& types, const std::string& provenance) {
   const std::size_t vertex_count = mesh.positions.size();
   std::size_t face_count = 0, edge_count = 0;
   for (const MeshPart& part : mesh.parts) face_count += part.index_count / 3;
@@ -55,6 +55,7 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
   colour_vertices(mesh.line_parts, mesh.line_indices);
 
   std::string out = "ply\nformat binary_little_endian 1.0\ncomment Sylva mesh\n";
+  if (!provenance.empty()) out += "comment sylva:provenance " + provenance + "\n";  // api/provenance.h
   // The names behind module_id, for readers that have no registry.
   for (abi::ModuleId id : modules)
     out += "comment module " + std::to_string(id) + " " + mesh_support::module_name(types, id) + "\n";
@@ -93,6 +94,11 @@ void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, cons
     }
   }
   write_output_file(path, out);
+}
+
+void write_ply(const std::string& path, const geometry::TriangleMesh& mesh, const geometry::Palette& palette,
+               const ModuleTypes& types) {
+  write_ply(path, mesh, palette, types, std::string());
 }
 
 }  // namespace sylva::io

@@ -7,7 +7,8 @@ namespace sylva::lang::cpfg {
 RandomCode random_code(const std::vector<LsystemRandomness>& lsystems, std::size_t rule_count) {
   RandomCode out;
   // The stream of ran() and its kin restarts with every run.
-  out.start = "::sylva::rt::cpfg::random = ::sylva::rt::cpfg::Random{}; ";
+  out.start = "::sylva::rt::cpfg::random = ::sylva::rt::cpfg::Random{}; "
+              "if (::sylva::rt::control.seed_fixed) ::sylva::rt::cpfg::random.srand(::sylva::rt::control.seed); ";
   out.declarations = "namespace {\n";
   const bool own_streams = std::any_of(lsystems.begin(), lsystems.end(),
                                        [](const LsystemRandomness& l) { return !l.homomorphism_seed.empty(); });
@@ -32,7 +33,10 @@ RandomCode random_code(const std::vector<LsystemRandomness>& lsystems, std::size
     // 0, 155})) only when its window opens; run in batch (-g), it never does,
     // so drand48 starts from its zero state whatever seed: says.
     const auto seeded = std::find_if(lsystems.begin(), lsystems.end(), [](const LsystemRandomness& l) { return l.stochastic; });
-    out.start += "::sylva::rt::control.rand48 = ::sylva::rt::control.cpfg_window_seeding ? ((155ULL << 32) | "
+    // A run's own seed takes the place of seed: as the window would use it.
+    out.start += "::sylva::rt::control.rand48 = ::sylva::rt::control.seed_fixed ? ((155ULL << 32) | "
+                 "(static_cast<::std::uint64_t>(::sylva::rt::control.seed) & 0xFFFFULL)) : "
+                 "::sylva::rt::control.cpfg_window_seeding ? ((155ULL << 32) | "
                  "(static_cast<::std::uint64_t>(" + seeded->production_seed + ") & 0xFFFFULL)) : 0; ";
     // The module's draw, the productions that apply with their
     // probabilities (cpfg sums them in float), and the one chosen.

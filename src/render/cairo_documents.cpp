@@ -99,6 +99,11 @@ std::string cairo_document(const Drawing& d, DrawingFormat format, const std::st
                       : cairo_ps_surface_create_for_stream(append_to_string, &out, d.width, d.height),
                   cairo_surface_destroy);
   if (format == DrawingFormat::Pdf) cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "Sylva");
+  // Provenance (api/provenance.h): cairo 1.16 has no custom PDF metadata, so
+  // the record goes in the Subject, after its key.
+  if (format == DrawingFormat::Pdf && !d.provenance.empty())
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_SUBJECT,
+                                   ("sylva:provenance " + d.provenance).c_str());
   if (format == DrawingFormat::Eps) cairo_ps_surface_set_eps(surface.get(), 1);
   {
     Context cr(cairo_create(surface.get()), cairo_destroy);

@@ -46,6 +46,9 @@ struct Drawing {
   LineCap line_cap = LineCap::Round;
   float font_size = 12;  // lpfg's default label font: courier bold 12 pixels
   std::vector<Shape> shapes;  // back to front
+  // The run record's JSON (api/provenance.h), when not empty: SVG's
+  // <metadata>, PostScript's %%sylva:provenance comment, PDF's Subject.
+  std::string provenance;
 };
 
 Drawing project_scene(const geometry::Scene& scene, const geometry::Palette& palette,

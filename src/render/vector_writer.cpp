@@ -121,6 +121,8 @@ std::string svg_document(const Drawing& d, const ModuleTypes* types) {
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(d.width) +
          "\" height=\"" + std::to_string(d.height) + "\" viewBox=\"0 0 " + std::to_string(d.width) + " " +
          std::to_string(d.height) + "\">\n";
+  if (!d.provenance.empty())  // api/provenance.h
+    out += "<metadata id=\"sylva-provenance\">" + xml_escape(d.provenance) + "</metadata>\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(d.width) + "\" height=\"" + std::to_string(d.height) +
          "\" fill=\"" + hex_color(d.background) + "\"/>\n";
   // One group per run of shapes made by the same module; the painter's order
@@ -141,6 +143,15 @@ std::string svg_document(const Drawing& d, const ModuleTypes* types) {
   if (run) out += "</g>\n";
   out += "</svg>\n";
   return out;
+}
+
+// `line` added to a PostScript file's header comments, before %%EndComments
+// (cairo_ps_surface_dsc_comment takes no more than 255 characters).
+std::string with_ps_comment(const std::string& document, const std::string& line) {
+  std::size_t at = document.find("\n%%EndComments");
+  if (at == std::string::npos) at = document.find('\n');
+  if (at == std::string::npos) return document;
+  return document.substr(0, at + 1) + line + "\n" + document.substr(at + 1);
 }
 
 VectorPrinter& printer() {
@@ -165,12 +176,19 @@ DrawingFormat format_of(const std::string& path) {
 
 void write_vector_drawing(const std::string& path, const geometry::Scene& scene, const geometry::Palette& palette,
                           const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
-                          const ModuleTypes* types, int ps_linecap) {
+                          const ModuleTypes* types, int ps_linecap, const std::string& provenance) {
   const DrawingFormat format = format_of(path);
   const LineCap cap = ps_linecap == 0 ? LineCap::Butt : ps_linecap == 2 ? LineCap::Square : LineCap::Round;
-  const Drawing drawing = project_scene(scene, palette, view, line_style, width, height, cap);
-  write_output_file(path, format == DrawingFormat::Svg ? svg_document(drawing, types)
-                                                      : printer().document(drawing, format, path));
+  Drawing drawing = project_scene(scene, palette, view, line_style, width, height, cap);
+  drawing.provenance = provenance;
+  if (format == DrawingFormat::Svg) {
+    write_output_file(path, svg_document(drawing, types));
+    return;
+  }
+  std::string document = printer().document(drawing, format, path);
+  if (!provenance.empty() && (format == DrawingFormat::Ps || format == DrawingFormat::Eps))
+    document = with_ps_comment(document, std::string("%%sylva:provenance ") + provenance);
+  write_output_file(path, document);
 }
 
 std::string drawing_png(const Drawing& drawing, const std::string& path) {

@@ -25,9 +25,12 @@ namespace sylva::io {
 // default here) joins consecutive segments without notches.
 // The file is written whole or not at all; "-" writes SVG to standard output.
 // Throws ModelError naming the path on an unknown extension or a failed write.
+// `provenance`, when not empty, is the run record's JSON (api/provenance.h):
+// SVG <metadata id="sylva-provenance">, a PostScript and EPS header comment
+// line `%%sylva:provenance {json}`, PDF's Subject `sylva:provenance {json}`.
 void write_vector_drawing(const std::string& path, const geometry::Scene& scene, const geometry::Palette& palette,
                           const geometry::ViewParameters& view, geometry::LineStyle line_style, int width, int height,
-                          const ModuleTypes* types = nullptr, int ps_linecap = 1);
+                          const ModuleTypes* types = nullptr, int ps_linecap = 1, const std::string& provenance = {});
 
 struct Drawing;
 

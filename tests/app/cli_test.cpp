@@ -175,7 +175,7 @@ const std::vector<BadCommandLine> kBadCommandLines = {
     {"UnknownOptionAlone", {"--bogus"}, "sylva: error: ", "--bogus"},
     // A mistyped command is named, not reported as a missing one.
     {"MistypedCommand", {"runn", "model.l"}, "sylva: error: ", "runn"},
-    {"NoCommand", {}, "sylva: error: ", "run, studio or translate"},
+    {"NoCommand", {}, "sylva: error: ", "run, experiment, studio or translate"},
     {"NegativeStepCount", {"run", "model.l", "--string", "out.txt", "--steps", "-3"}, "sylva: error: --steps: ",
      "expected a number of steps (0 or more), not '-3'"},
     {"StepCountNotANumber", {"run", "model.l", "--string", "out.txt", "--steps", "x"}, "sylva: error: --steps: ",
@@ -302,13 +302,14 @@ TEST(Cli, StringToFile) {
   ASSERT_EQ(r.exit_code, 0) << show(r);
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(read_text(dir + "/out.txt"), "A(9)\n");
-  // Only the file itself: no temporary file remains.
+  // Only the file itself (and its provenance record, docs/provenance.md): no temporary file remains.
   int entries = 0;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
     (void)entry;
     ++entries;
   }
-  EXPECT_EQ(entries, 2);  // model.l and out.txt
+  EXPECT_EQ(entries, 3);  // model.l, out.txt and out.txt.provenance.json
+  EXPECT_TRUE(fs::exists(dir + "/out.txt.provenance.json"));
 
   // Overwritten by the next run.
   r = run_sylva({"run", "model.l", "--steps", "0", "--string", "out.txt"}, dir);

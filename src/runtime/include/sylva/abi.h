@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 13;
+inline constexpr std::uint32_t kAbiVersion = 14;
 
 using ModuleId = std::uint16_t;
 
@@ -222,6 +222,13 @@ struct ControlState {
   // old string and the draw, rather than from rand48; so a stochastic model
   // derives the same string whichever bodies run first. Null: rand48.
   double (*keyed_random)(void* host) = nullptr;
+  // A run's seed (`sylva run --seed`, an experiment's replicate): the
+  // generators start from it (as sran(seed) and SeedGillespie(seed) would
+  // set them; a cpfg model's as seed: and srand(seed) would), and the
+  // model's own sran, SeedGillespie, srand and seed: are passed over, so
+  // that replicates differ even where a model seeds itself.
+  bool seed_fixed = false;
+  long seed = 0;
 };
 
 // The state lpfg gives both of its generators when it loads a model (erand48

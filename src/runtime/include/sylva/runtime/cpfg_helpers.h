@@ -36,7 +36,7 @@ inline double sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
 inline Random random;
 inline double ran(double x) { return random.ran(x); }
 inline double srand(double seed) {
-  random.srand(seed);
+  if (!::sylva::rt::control.seed_fixed) random.srand(seed);
   return 0.0;
 }
 inline double nran(double mean, double sd) { return random.nran(mean, sd); }

@@ -96,10 +96,14 @@ inline double ran(double range) {
   const sylva::abi::ControlState& c = sylva::rt::control;
   return (c.keyed_random ? c.keyed_random(c.host) : sylva::rt::next_rand48()) * range;
 }
-inline void sran(long seed) { sylva::rt::control.rand48 = sylva::rt::lpfg_random_state(seed); }
+inline void sran(long seed) {
+  if (!sylva::rt::control.seed_fixed) sylva::rt::control.rand48 = sylva::rt::lpfg_random_state(seed);
+}
 
 // ---- Gillespie groups (6.1.2, 7.2): their own generator, apart from ran().
-inline void SeedGillespie(long seed) { sylva::rt::control.gillespie_random = sylva::rt::lpfg_random_state(seed); }
+inline void SeedGillespie(long seed) {
+  if (!sylva::rt::control.seed_fixed) sylva::rt::control.gillespie_random = sylva::rt::lpfg_random_state(seed);
+}
 // The time of the Gillespie steps so far: the sum of the times to each
 // reaction fired (lpfg's clock), 0 at Start and after ResetGillespie().
 inline double GillespieTime() { return sylva::rt::control.gillespie_time; }
