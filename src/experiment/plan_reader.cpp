@@ -86,6 +86,10 @@ class Reader {
   fs::path base_;
 };
 
+// The most values a parameter takes, and the most runs a plan makes.
+constexpr long kMostValues = 1000000;
+constexpr double kMostRuns = 1e7;
+
 // A number as -D should get it: integers as integers, others with up to 12
 // significant digits so that 0.1 + 2 · 0.1 is written 0.3.
 std::string number_text(double value) {
@@ -127,6 +131,7 @@ std::vector<std::string> parameter_values(const Reader& r, const toml::node& nod
     if (!(low < high)) r.fail(*spec.get("uniform"), "'uniform' needs low < high");
     if (!spec.contains("samples")) r.fail(node, "'uniform' needs 'samples = N'");
     const long count = r.integer(*spec.get("samples"), "samples", 1);
+    if (count > kMostValues) r.fail(*spec.get("samples"), "at most 10^6 samples");
     // The draws depend on the plan's seed and the parameter's name only.
     SampleStream stream(seed, name);
     for (long i = 0; i < count; ++i) values.push_back(number_text(low + (high - low) * stream.next()));
@@ -137,6 +142,7 @@ std::vector<std::string> parameter_values(const Reader& r, const toml::node& nod
   const double from = r.number(*spec.get("from"), "from"), to = r.number(*spec.get("to"), "to");
   if (spec.contains("count")) {
     const long count = r.integer(*spec.get("count"), "count", 1);
+    if (count > kMostValues) r.fail(*spec.get("count"), "at most 10^6 values");
     if (count == 1 && from != to) r.fail(*spec.get("count"), "'count = 1' needs from = to");
     for (long i = 0; i < count; ++i) values.push_back(number_text(count == 1 ? from : from + (to - from) * i / (count - 1)));
     return values;
@@ -148,7 +154,8 @@ std::vector<std::string> parameter_values(const Reader& r, const toml::node& nod
   if (span < -1e-9) r.fail(node, "the range of '" + name + "' has no values: from " + number_text(from) + " never reaches " +
                                      number_text(to) + " by " + number_text(step));
   const long count = static_cast<long>(std::floor(span + 1e-9)) + 1;
-  if (count > 1000000) r.fail(node, "the range of '" + name + "' has " + std::to_string(count) + " values (at most 10^6)");
+  if (count > kMostValues)
+    r.fail(node, "the range of '" + name + "' has " + std::to_string(count) + " values (at most 10^6)");
   for (long i = 0; i < count; ++i) values.push_back(number_text(from + step * i));
   return values;
 }
@@ -215,8 +222,11 @@ Plan read(const toml::table& root, const Reader& r) {
     }
   }
   if (const toml::node* seed = root.get("seed")) plan.seed = r.integer(*seed, "seed", 0);
-  if (const toml::node* replicates = root.get("replicates"))
-    plan.replicates = static_cast<int>(r.integer(*replicates, "replicates", 1));
+  if (const toml::node* replicates = root.get("replicates")) {
+    const long count = r.integer(*replicates, "replicates", 1);
+    if (count > kMostRuns) r.fail(*replicates, "at most 10^7 replicates");
+    plan.replicates = static_cast<int>(count);
+  }
   if (const toml::node* design = root.get("design")) {
     const std::string& d = r.string(*design, "design");
     if (d != "grid" && d != "zip") r.fail(*design, "'design' is \"grid\" (every combination) or \"zip\" (the i-th values together)");
@@ -235,6 +245,13 @@ Plan read(const toml::table& root, const Reader& r) {
                                    plan.parameters.front().name + "' (" + std::to_string(plan.parameters.front().values.size()) +
                                    "); '" + p.name + "' has " + std::to_string(p.values.size()));
   }
+  double runs = std::max(plan.replicates, 1);
+  if (plan.zip && !plan.parameters.empty()) runs *= static_cast<double>(plan.parameters.front().values.size());
+  for (const Parameter& p : plan.parameters)
+    if (!plan.zip) runs *= static_cast<double>(p.values.size());
+  if (runs > kMostRuns)
+    throw ModelError(plan.parameters.empty() ? r.at(*root.get("replicates")) : plan.parameters.front().at,
+                     "the plan makes " + number_text(runs) + " runs (at most 10^7)");
   if (root.contains("steps") && root.contains("times"))
     r.fail(*root.get("times"), "give 'steps' (derivation steps) or 'times' (a continuous model), not both");
   if (const toml::node* steps = root.get("steps")) {

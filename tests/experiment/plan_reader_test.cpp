@@ -116,6 +116,12 @@ TEST(PlanReader, ErrorsPointAtThePlansLineAndColumn) {
     }
     return std::string();
   }().find("plan.toml:1:9: error: no model file"), std::string::npos);
+  // Too many values or runs: a clear error rather than memory exhausted.
+  EXPECT_NE(error_of("[parameters]\nA = { from = 0, to = 1, count = 2000000 }\n" + kMeasure).find("plan.toml:3:33: error: at most 10^6 values"),
+            std::string::npos);
+  EXPECT_NE(error_of("replicates = 100000\n[parameters]\nA = { from = 1, to = 1000, step = 1 }\n" + kMeasure)
+                .find("plan.toml:4:5: error: the plan makes 100000000 runs (at most 10^7)"),
+            std::string::npos);
   // Nothing measured.
   EXPECT_NE(error_of("").find("measures nothing"), std::string::npos);
   // A plot of a parameter the plan lacks.
