@@ -5,8 +5,10 @@
 //
 //   GpuChaikin/<steps>     the GL stencil deriver (libsylva_gl.so): context,
 //                          shader, upload, one render pass per step, read back.
-//                          With OSMesa (Mesa's software rasteriser, llvmpipe)
-//                          this runs on the CPU's cores; a real GPU differs.
+//                          OpenGL as SYLVA_GL chooses (unset: EGL, a GPU where
+//                          there is one), named in the label; on llvmpipe (EGL
+//                          surfaceless or OSMesa) this runs on the CPU's cores.
+//   GpuChaikinOsmesa/<steps>  the same through OSMesa (SYLVA_GL=osmesa).
 //   CpuStencilChaikin/<steps>  the CPU stencil deriver (doubles, one thread).
 //   EngineChaikin/<steps>  the engine: Simulation::run(steps) of the model.
 // The probe (which finds the stencil through the engine) is done once, untimed.
@@ -60,9 +62,18 @@ void stencil_bench(benchmark::State& state, sylva::gpu::StencilDeriver& deriver)
   state.counters["points"] = static_cast<double>(points);
   state.counters["Mpts/s"] =
       benchmark::Counter(static_cast<double>(points) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+  state.SetLabel(deriver.name());  // the GL derivers: which OpenGL
 }
 
 void GpuChaikin(benchmark::State& state) { stencil_bench(state, sylva::gpu::gl_stencil_deriver()); }
+
+void GpuChaikinOsmesa(benchmark::State& state) {
+  const char* chosen = std::getenv("SYLVA_GL");
+  const std::string before = chosen ? chosen : "";
+  setenv("SYLVA_GL", "osmesa", 1);
+  stencil_bench(state, sylva::gpu::gl_stencil_deriver());
+  chosen ? setenv("SYLVA_GL", before.c_str(), 1) : unsetenv("SYLVA_GL");
+}
 
 void CpuStencilChaikin(benchmark::State& state) {
   sylva::gpu::CpuStencilDeriver cpu;
@@ -91,6 +102,7 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(GpuChaikin)->Apply(sizes);
+BENCHMARK(GpuChaikinOsmesa)->Apply(sizes);
 BENCHMARK(CpuStencilChaikin)->Apply(sizes);
 BENCHMARK(EngineChaikin)->Apply(sizes);
 
@@ -152,6 +164,7 @@ void adaptive_bench(benchmark::State& state, sylva::gpu::LsystemDeriver& deriver
   state.counters["modules"] = static_cast<double>(modules);
   state.counters["Mmod/s"] =
       benchmark::Counter(static_cast<double>(modules) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+  state.SetLabel(deriver.name());
 }
 
 void GpuAdaptive(benchmark::State& state) {

@@ -8,6 +8,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev   # tests
   libbenchmark-dev            # bench/
   pkg-config libcairo2-dev libosmesa6-dev libpng-dev   # vector drawings, offscreen OpenGL, PNG
+  libegl-dev libgl1-mesa-dri                           # --gpu: headless OpenGL through EGL (surfaceless: llvmpipe)
   libssl-dev                                           # SHA-256 in provenance records (libcrypto)
   libtinygltf-dev nlohmann-json3-dev libstb-dev        # glTF
   libgraphicsmagick1-dev                               # texture images (PNG, SGI .rgb ...)

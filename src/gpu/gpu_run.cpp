@@ -40,8 +40,8 @@ bool run_translated_on_gpu(const std::string& model, const SimulationOptions& op
   }
   std::fprintf(stderr,
                "sylva: --gpu: %s is not a point-subdivision L-system: %s; deriving it on the GPU by its productions "
-               "translated to GLSL (algorithm 2)\n",
-               model.c_str(), probe_reason.c_str());
+               "translated to GLSL (algorithm 2), through %s\n",
+               model.c_str(), probe_reason.c_str(), gl_lsystem_deriver().name().c_str());
   io::write_output_file(string_path, format_gpu_string(translation.program, derived, true) + "\n");
   return true;
 }
@@ -65,6 +65,9 @@ bool run_on_gpu(const std::string& model, const SimulationOptions& options, int 
     std::fprintf(stderr, "sylva: %s; deriving on the CPU\n", error.what());
     return false;
   }
+  if (options.build.verbose)
+    std::fprintf(stderr, "sylva: --gpu: %s derived by its stencil (algorithm 1) through %s\n", model.c_str(),
+                 gl_stencil_deriver().name().c_str());
   io::write_output_file(string_path, format_point_string(probe.axiom, points, true) + "\n");
   return true;
 }

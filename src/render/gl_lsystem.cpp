@@ -1,6 +1,6 @@
 // The GPU L-system deriver (gpu/lsystem_glsl.h): algorithm 2 of "Generating
 // subdivision curves with L-systems on a GPU", in fragment shaders through
-// OpenGL (OSMesa, as the raster renderer and gl_stencil.cpp).
+// OpenGL through EGL or OSMesa (gl_headless_context.h), as gl_stencil.cpp.
 //
 // A string of n modules lies in two textures wrapped into rows of W texels:
 // RGBA32F the parameters (4 floats), R32I the module's type. Each step:
@@ -19,43 +19,17 @@
 //      the sums read back; the search keeps the sums on the GPU and needs no
 //      readback but the total.
 // The final string is read back once.
-#define GL_GLEXT_PROTOTYPES
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
-
 #include <algorithm>
 #include <string>
 #include <vector>
 
 #include "gpu/lsystem_glsl.h"
+#include "render/gl_headless_context.h"
 #include "support/diagnostic.h"
 #include "support/plugin_library.h"
 
 namespace sylva::gpu {
 namespace {
-
-class Context {
- public:
-  Context() {
-    context_ = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
-    if (!context_) throw ModelError("--gpu: cannot create an OpenGL context (OSMesa)");
-    if (!OSMesaMakeCurrent(context_, pixel_, GL_UNSIGNED_BYTE, 1, 1)) {
-      OSMesaDestroyContext(context_);
-      throw ModelError("--gpu: cannot make the OpenGL context current (OSMesa)");
-    }
-  }
-  ~Context() {
-    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    OSMesaDestroyContext(context_);
-  }
-  Context(const Context&) = delete;
-  Context& operator=(const Context&) = delete;
-
- private:
-  OSMesaContext context_ = nullptr;
-  unsigned char pixel_[4] = {};
-};
 
 const char* const kPrelude = R"(#version 130
 uniform isampler2D sylva_types;
@@ -202,7 +176,8 @@ class Gl : public GlLsystemDeriver {
 
   GpuString derive(const LsystemProgram& program, const GpuString& string, int steps) override {
     if (steps <= 0 || string.size() == 0) return string;
-    Context context;
+    HeadlessGlContext context;
+    context_ = context.description();
     setup();
     Layout src = layout_for(static_cast<long>(string.size()));
     std::vector<float> values(static_cast<std::size_t>(src.width) * src.rows * 4, 0.0f);
@@ -284,7 +259,8 @@ class Gl : public GlLsystemDeriver {
 
   std::vector<std::int64_t> scan_add(const std::vector<std::int32_t>& lengths) override {
     if (lengths.empty()) return {};
-    Context context;
+    HeadlessGlContext context;
+    context_ = context.description();
     setup();
     const Layout l = layout_for(static_cast<long>(lengths.size()));
     // What fragment program 1 writes: (length, production).
@@ -304,7 +280,8 @@ class Gl : public GlLsystemDeriver {
     return result;
   }
 
-  std::string name() const override { return "gl"; }
+  // "gl", and after a derivation the OpenGL it ran on (HeadlessGlContext::description).
+  std::string name() const override { return context_.empty() ? "OpenGL" : "OpenGL on " + context_; }
 
  private:
   void setup() {
@@ -404,6 +381,7 @@ class Gl : public GlLsystemDeriver {
     if (error != GL_NO_ERROR) throw ModelError(std::string("--gpu: OpenGL error ") + std::to_string(error) + " in " + what);
   }
 
+  std::string context_;
   int row_width_ = 0;
   int radix_ = 2;
   int max_size_ = 4096;

@@ -4,18 +4,14 @@
 // (R32F, RG32F or RGBA32F by dimension), one texel per point, wrapped into rows; each step renders a
 // framebuffer texture of k·n texels, texel o = q·k + i computing
 // sum_j c[i][j] · p[(q + j - left) mod n]; the two textures ping-pong and the
-// last is read back. OpenGL through OSMesa, like the raster renderer: on a
-// machine without a GPU this is Mesa's software rasteriser.
-#define GL_GLEXT_PROTOTYPES
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
-
+// last is read back. OpenGL through EGL (a GPU where there is one) or OSMesa
+// (Mesa's software rasteriser): gl_headless_context.h.
 #include <algorithm>
 #include <string>
 #include <vector>
 
 #include "gpu/stencil_deriver.h"
+#include "render/gl_headless_context.h"
 #include "support/diagnostic.h"
 #include "support/plugin_library.h"
 
@@ -73,28 +69,6 @@ void main() {
   result = sum;
 }
 )";
-
-class OsmesaContext {
- public:
-  OsmesaContext() {
-    context_ = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
-    if (!context_) throw ModelError("--gpu: cannot create an OpenGL context (OSMesa)");
-    if (!OSMesaMakeCurrent(context_, pixel_, GL_UNSIGNED_BYTE, 1, 1)) {
-      OSMesaDestroyContext(context_);
-      throw ModelError("--gpu: cannot make the OpenGL context current (OSMesa)");
-    }
-  }
-  ~OsmesaContext() {
-    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    OSMesaDestroyContext(context_);
-  }
-  OsmesaContext(const OsmesaContext&) = delete;
-  OsmesaContext& operator=(const OsmesaContext&) = delete;
-
- private:
-  OSMesaContext context_ = nullptr;
-  unsigned char pixel_[4] = {};
-};
 
 GLuint make_program() {
   const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
@@ -169,7 +143,8 @@ class GlStencilDeriver : public StencilDeriver {
       throw ModelError("--gpu: a stencil of more than " + std::to_string(kMaxCoefficients) + " weights");
     const long n0 = static_cast<long>(points.size()) / dim;
     if (steps == 0 || n0 == 0) return points;
-    OsmesaContext context;
+    HeadlessGlContext context;
+    context_ = context.description();
     GLint max_size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
     GLint max_viewport[2] = {0, 0};
@@ -255,7 +230,11 @@ class GlStencilDeriver : public StencilDeriver {
       for (int d = 0; d < dim; ++d) derived[q * dim + d] = result[q * f.channels + d];
     return derived;
   }
-  std::string name() const override { return "gl"; }
+  // "gl", and after a derivation the OpenGL it ran on (HeadlessGlContext::description).
+  std::string name() const override { return context_.empty() ? "OpenGL" : "OpenGL on " + context_; }
+
+ private:
+  std::string context_;
 };
 
 }  // namespace
