@@ -21,6 +21,7 @@
 #include "build/model_builder.h"
 #include "gpu/lsystem_body_parser.h"
 #include "gpu/lsystem_tree.h"
+#include "gpu/number_text.h"
 #include "lang/lc_parser.h"
 #include "lang/model_ir.h"
 #include "lang/token.h"
@@ -305,15 +306,6 @@ class Translator {
   std::map<std::string, int> index_;
   std::map<std::string, Expr> constants_;
 };
-
-// ---- writing numbers -----------------------------------------------------------
-
-void append_number(std::string& out, double v, bool single) {
-  char buffer[64];
-  auto r = single ? std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(v))
-                  : std::to_chars(buffer, buffer + sizeof buffer, v);
-  out.append(buffer, r.ptr);
-}
 
 }  // namespace
 

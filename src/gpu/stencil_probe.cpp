@@ -6,6 +6,7 @@
 #include <random>
 #include <sstream>
 
+#include "gpu/number_text.h"
 #include "io/string_reader.h"
 #include "support/diagnostic.h"
 
@@ -47,13 +48,6 @@ bool numeric_params(const ModuleTypes& types, const std::string& name) {
   for (const auto& field : params)
     if (!scalar(field.type)) return false;
   return true;
-}
-
-void append_number(std::string& out, double value, bool as_float) {
-  char buffer[64];
-  auto result = as_float ? std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value))
-                         : std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
 }
 
 }  // namespace

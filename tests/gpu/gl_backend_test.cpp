@@ -20,6 +20,7 @@
 #include "gpu/stencil_deriver.h"
 #include "gpu/stencil_probe.h"
 #include "support/diagnostic.h"
+#include "gpu/gpu_test_support.h"
 #include "test_support.h"
 
 namespace sylva::test {
@@ -49,15 +50,6 @@ build::BuildOptions test_build() {
   build::BuildOptions options;
   options.cache_dir = SYLVA_TEST_CACHE_DIR;
   return options;
-}
-
-void expect_close(const std::vector<double>& got, const std::vector<double>& want, double relative) {
-  ASSERT_EQ(got.size(), want.size());
-  double scale = 1;
-  for (double v : want) scale = std::max(scale, std::abs(v));
-  double worst = 0;
-  for (std::size_t i = 0; i < got.size(); ++i) worst = std::max(worst, std::abs(got[i] - want[i]));
-  EXPECT_LE(worst, relative * scale);
 }
 
 TEST(GpuOpenGl, EglAndOsmesaDeriveTheEnginesPoints) {

@@ -12,6 +12,7 @@
 #include "api/simulation.h"
 #include "gpu/stencil_deriver.h"
 #include "gpu/stencil_probe.h"
+#include "gpu/gpu_test_support.h"
 #include "test_support.h"
 
 namespace sylva::test {
@@ -168,15 +169,6 @@ PointString engine_points(const std::string& model, int steps, bool open = false
   std::string reason;
   EXPECT_TRUE(gpu::parse_point_string(simulation.string_text(), simulation.types(), points, reason)) << reason;
   return points;
-}
-
-void expect_close(const std::vector<double>& got, const std::vector<double>& want, double relative) {
-  ASSERT_EQ(got.size(), want.size());
-  double scale = 1;
-  for (double v : want) scale = std::max(scale, std::abs(v));
-  double worst = 0;
-  for (std::size_t i = 0; i < got.size(); ++i) worst = std::max(worst, std::abs(got[i] - want[i]));
-  EXPECT_LE(worst, relative * scale);
 }
 
 // The example and whether -D OPEN.
