@@ -212,7 +212,9 @@ TEST(MultiresSweep, ModifiedSweepKeepsTheDetails) {
           }
           coarse = fine;
         }
-        if (normals == 1) EXPECT_GT(turned_details, 0.05);
+        if (normals == 1) {
+          EXPECT_GT(turned_details, 0.05);
+        }
         EXPECT_EQ(run.steps_done(), 4 * kLevels);
       }
 }

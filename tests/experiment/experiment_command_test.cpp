@@ -66,12 +66,16 @@ TEST(ExperimentCommand, TheExampleSweepEqualsSeparateSingleRuns) {
     const long run = std::stol(row.at("run"));
     // The seeds repeat across angles: replicate r has one seed.
     auto [seed, first_seen] = seed_of_replicate.emplace(row.at("replicate"), row.at("seed"));
-    if (!first_seen) EXPECT_EQ(seed->second, row.at("seed"));
+    if (!first_seen) {
+      EXPECT_EQ(seed->second, row.at("seed"));
+    }
     EXPECT_EQ(std::stoi(row.at("ANGLE")), 15 + 15 * (run / 20));
     if (row.at("step") != "8") continue;
     // The draws do not depend on the angle: the same counts for each seed.
     auto [it, first] = apices_at_8.emplace(row.at("seed"), row.at("apices"));
-    if (!first) EXPECT_EQ(it->second, row.at("apices")) << "seed " << row.at("seed");
+    if (!first) {
+      EXPECT_EQ(it->second, row.at("apices")) << "seed " << row.at("seed");
+    }
   }
   // Seeds differ: not every replicate has the same number of apices.
   std::set<std::string> distinct;
