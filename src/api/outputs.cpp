@@ -145,8 +145,7 @@ void write_frame(const std::string& dir, int number, const std::vector<std::stri
   std::optional<geometry::Scene> scene;
   for (const std::string& format : formats) {
     if (format == kStringFrame) {
-      simulation.write_string(path + format);
-      write_string_provenance(path + format, simulation);  // FILE.provenance.json, when recorded
+      write_recorded_string(path + format, simulation);  // and FILE.provenance.json, when recorded
       continue;
     }
     if (!scene) scene = simulation.scene();

@@ -212,39 +212,44 @@ RunRecord parse_run_record(const std::string& text, const std::string& source) {
 
 namespace {
 
+// The names records give input kinds, both ways.
+constexpr std::pair<io::InputKind, const char*> kKindNames[] = {
+    {io::InputKind::View, "view"},
+    {io::InputKind::Animation, "animation"},
+    {io::InputKind::Colormap, "colormap"},
+    {io::InputKind::Materials, "materials"},
+    {io::InputKind::Contour, "contour"},
+    {io::InputKind::ContourSet, "contour-set"},
+    {io::InputKind::Function, "function"},
+    {io::InputKind::FunctionSet, "function-set"},
+    {io::InputKind::TimedFunctionSet, "timed-function-set"},
+    {io::InputKind::Parameters, "parameters"},
+    {io::InputKind::Environment, "environment"}};
+
 const char* kind_name(io::InputKind kind) {
-  switch (kind) {
-    case io::InputKind::View: return "view";
-    case io::InputKind::Animation: return "animation";
-    case io::InputKind::Colormap: return "colormap";
-    case io::InputKind::Materials: return "materials";
-    case io::InputKind::Contour: return "contour";
-    case io::InputKind::ContourSet: return "contour-set";
-    case io::InputKind::Function: return "function";
-    case io::InputKind::FunctionSet: return "function-set";
-    case io::InputKind::TimedFunctionSet: return "timed-function-set";
-    case io::InputKind::Parameters: return "parameters";
-    case io::InputKind::Environment: return "environment";
-    case io::InputKind::Unknown: break;
-  }
+  for (const auto& [k, name] : kKindNames)
+    if (k == kind) return name;
   return "";
 }
 
-std::string absolute_path(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::path p = std::filesystem::absolute(path, ec);
-  return ec ? path : p.lexically_normal().string();
+}  // namespace
+
+io::InputKind input_kind_named(const std::string& name, const std::string& path) {
+  for (const auto& [kind, kind_name] : kKindNames)
+    if (name == kind_name) return kind;
+  return io::input_kind_of(path);
 }
 
-HashedFile hashed(const std::string& path) {
+HashedFile hashed_file(const std::string& path) {
   HashedFile f;
-  f.path = absolute_path(path);
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  f.path = ec ? path : absolute.lexically_normal().string();
   f.sha256 = file_sha256(path).value_or("");
   return f;
 }
 
-// The first line of `compiler --version`, "" when it cannot be run.
-std::string compiler_version_line(const std::string& compiler) {
+std::string compiler_version(const std::string& compiler) {
   static std::mutex mutex;
   static std::map<std::string, std::string> known;  // one run per compiler per process
   std::lock_guard<std::mutex> lock(mutex);
@@ -260,20 +265,18 @@ std::string compiler_version_line(const std::string& compiler) {
   return line;
 }
 
-}  // namespace
-
 RunRecord make_run_record(const Simulation& simulation, const SimulationOptions& options) {
   RunRecord r;
   r.sylva_version = SYLVA_VERSION;
-  r.model = hashed(simulation.model_path());
+  r.model = hashed_file(simulation.model_path());
   for (const io::InputFile& input : options.input_files) {
-    HashedFile f = hashed(input.path);
+    HashedFile f = hashed_file(input.path);
     f.kind = kind_name(input.kind);
     f.slot = input.slot;
     r.inputs.push_back(std::move(f));
   }
   if (!options.environment.comm_file.empty()) {
-    HashedFile f = hashed(options.environment.comm_file);
+    HashedFile f = hashed_file(options.environment.comm_file);
     f.kind = kind_name(io::InputKind::Environment);
     r.inputs.push_back(std::move(f));
   }
@@ -283,7 +286,6 @@ RunRecord make_run_record(const Simulation& simulation, const SimulationOptions&
   r.keyed_random = options.keyed_random;
   r.cpfg_window_seeding = options.cpfg_window_seeding;
   r.compiler = options.build.compiler.empty() ? default_compiler() : options.build.compiler;
-  r.compiler_version = compiler_version_line(r.compiler);
   return r;
 }
 
@@ -293,13 +295,21 @@ std::string string_sha256(const Simulation& simulation) {
   return hash.hex();
 }
 
-RunRecord complete_run_record(RunRecord r, const Simulation& simulation) {
+namespace {
+
+// `string_sha256`: the string's hash when it is already known.
+RunRecord completed(RunRecord r, const Simulation& simulation, std::string string_sha256_hex) {
+  if (r.compiler_version.empty()) r.compiler_version = compiler_version(r.compiler);
   r.step = simulation.step_number();
   if (r.continuous) r.time = simulation.time();
   r.finished = simulation.finished();
-  r.string_sha256 = string_sha256(simulation);
+  r.string_sha256 = string_sha256_hex.empty() ? string_sha256(simulation) : std::move(string_sha256_hex);
   return r;
 }
+
+}  // namespace
+
+RunRecord complete_run_record(RunRecord r, const Simulation& simulation) { return completed(std::move(r), simulation, ""); }
 
 // ---- the outputs' records
 
@@ -330,7 +340,11 @@ ProvenanceScope::~ProvenanceScope() {
   registry().erase(simulation_);
 }
 
-std::string provenance_json(const Simulation& simulation) {
+namespace {
+
+// The record of the simulation's state, made once per state; `known_sha256`:
+// the string's hash, when the caller has just computed it.
+std::string record_json(const Simulation& simulation, const std::string& known_sha256) {
   std::lock_guard<std::mutex> lock(registry_mutex);
   auto found = registry().find(&simulation);
   if (found == registry().end()) return {};
@@ -339,17 +353,44 @@ std::string provenance_json(const Simulation& simulation) {
                                      entry.base.continuous ? simulation.time() : 0.0,
                                      simulation.string().size_bytes());
   if (entry.json.empty() || entry.state != state) {
-    entry.json = run_record_json(complete_run_record(entry.base, simulation));
+    entry.json = run_record_json(completed(entry.base, simulation, known_sha256));
     entry.state = state;
   }
   return entry.json;
 }
 
-void write_string_provenance(const std::string& path, const Simulation& simulation) {
-  if (path == "-") return;
-  const std::string record = provenance_json(simulation);
-  if (record.empty()) return;
+bool recorded(const Simulation& simulation) {
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  return registry().count(&simulation) > 0;
+}
+
+void write_sidecar(const std::string& path, const std::string& record) {
+  if (path == "-" || record.empty()) return;
   io::write_output_file(path + kProvenanceSidecarSuffix, json::parse(record).dump(2) + "\n");
+}
+
+}  // namespace
+
+std::string provenance_json(const Simulation& simulation) { return record_json(simulation, ""); }
+
+void write_string_provenance(const std::string& path, const Simulation& simulation) {
+  write_sidecar(path, provenance_json(simulation));
+}
+
+void write_recorded_string(const std::string& path, const Simulation& simulation) {
+  if (path == "-" || !recorded(simulation)) {  // no sidecar to write
+    simulation.write_string(path);
+    return;
+  }
+  // The string's text is hashed as it is written rather than made again.
+  Sha256 hash;
+  io::write_output_file(path, [&](const ContentSink& sink) {
+    io::write_string_text(simulation.string(), simulation.types(), [&](std::string_view piece) {
+      hash.add(piece);
+      sink(piece);
+    });
+  });
+  write_sidecar(path, record_json(simulation, hash.hex()));
 }
 
 // ---- reading records back

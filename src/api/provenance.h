@@ -109,12 +109,25 @@ std::string run_record_json(const RunRecord& record);
 // Throws ModelError naming `source` when the text is not a record.
 RunRecord parse_run_record(const std::string& json, const std::string& source);
 
+// A file as a record names it: its absolute path and the SHA-256 of its bytes
+// ("" when it cannot be read).
+HashedFile hashed_file(const std::string& path);
+// The input kind a record names ("view", "function-set", ...); recognised by
+// `path`'s extension when the name is empty or unknown.
+io::InputKind input_kind_named(const std::string& name, const std::string& path);
+
 // What a run's outputs will record that does not change while it runs: the
 // model, the inputs, definitions, seed and compiler of `options` (as given
-// to the Simulation's constructor). Files are hashed now.
+// to the Simulation's constructor). Files are hashed now; the compiler's
+// version is left to complete_run_record, so that a run writing nothing
+// never starts the compiler.
 RunRecord make_run_record(const Simulation& simulation, const SimulationOptions& options);
+// The first line of `compiler --version` ("" when it cannot be run), run
+// once per compiler per process.
+std::string compiler_version(const std::string& compiler);
 // `base` filled with where `simulation` is now: its step (its time when
-// base.continuous is set), whether it finished, the string's SHA-256.
+// base.continuous is set), whether it finished, the string's SHA-256, and
+// the compiler's version if it has none.
 RunRecord complete_run_record(RunRecord base, const Simulation& simulation);
 // The SHA-256 of simulation.string_text(), computed as the text is made.
 std::string string_sha256(const Simulation& simulation);
@@ -142,6 +155,9 @@ std::string provenance_json(const Simulation& simulation);
 // Writes PATH.provenance.json beside a string written to `path` (not for
 // "-", nor without a scope).
 void write_string_provenance(const std::string& path, const Simulation& simulation);
+// Simulation::write_string and, under a scope, its sidecar, the string's
+// text hashed as it is written rather than made a second time.
+void write_recorded_string(const std::string& path, const Simulation& simulation);
 
 // ---- reading a record back (sylva run --reproduce)
 // The record embedded in `path` (by its extension: .png, .obj, .ply, .glb,

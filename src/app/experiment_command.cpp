@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "experiment/experiment.h"
-#include "experiment/local_processes.h"
 #include "experiment/mpi_session.h"
 
 namespace sylva::app {
@@ -27,20 +26,15 @@ int run_under_mpi(const Plan& plan, ExperimentOptions options) {
   if (mpi->rank() != 0) {
     if (!mpi->agree(true)) return 1;
     const std::vector<RunSpec> runs = plan_runs(plan);
-    SimulationOptions base = options.simulation;
-    for (const std::string& input : plan.inputs) base.input_files.emplace_back(input);
+    const SimulationOptions base = run_options(plan, options);
     mpi->serve([&](long number) {
-      LocalProcesses process(1, [&](const RunSpec& run) { return run_to_text(plan, run, base); }, plan.timeout_seconds);
-      process.start(runs.at(static_cast<std::size_t>(number)));
-      for (;;) {
-        std::vector<RunResult> done = process.collect(1000);
-        if (!done.empty()) return encode_result(done.front());
-      }
+      return encode_result(run_in_own_process(plan, runs.at(static_cast<std::size_t>(number)), base));
     });
     return 0;
   }
+  PreparedExperiment prepared;
   try {
-    prepare_experiment(plan, options);
+    prepared = prepare_experiment(plan, options);
   } catch (...) {
     mpi->agree(false);
     throw;
@@ -49,7 +43,7 @@ int run_under_mpi(const Plan& plan, ExperimentOptions options) {
   std::unique_ptr<Workers> others = other_ranks(*mpi);
   options.remote = others.get();
   if (options.jobs == 0) options.jobs = 1;  // under MPI a rank is one worker unless told otherwise
-  const ExperimentReport report = run_experiment(plan, options);
+  const ExperimentReport report = run_experiment(plan, prepared, options);
   others.reset();  // tells the other ranks to stop
   print_report(plan, report);
   return 0;

@@ -242,10 +242,14 @@ int run_command(const RunOptions& r, const CommonOptions& o) {
   if (r.string_path == kNoString) return 0;
   if (!r.string_path.empty() || !other_output) {
     const std::string path = r.string_path.empty() ? "-" : r.string_path;
-    // cpfg's -h: the string after homomorphism.
-    if (r.interpreted_string) simulation.write_interpreted_string(path, simulation.primary_view());
-    else simulation.write_string(path);
-    sylva::write_string_provenance(path, simulation);  // PATH.provenance.json
+    // cpfg's -h: the string after homomorphism. PATH.provenance.json beside
+    // the string (api/provenance.h).
+    if (r.interpreted_string) {
+      simulation.write_interpreted_string(path, simulation.primary_view());
+      sylva::write_string_provenance(path, simulation);
+    } else {
+      sylva::write_recorded_string(path, simulation);
+    }
   }
   return 0;
 }

@@ -1,7 +1,6 @@
 #include "app/reproduce_command.h"
 
 #include <cstdio>
-#include <filesystem>
 
 #include "io/string_reader.h"
 #include "support/diagnostic.h"
@@ -11,12 +10,7 @@ namespace sylva::app {
 RunRecord run_record(const Simulation& simulation, const SimulationOptions& options, const std::string& axiom_from,
                      const continuous::ContinuousSettings* in_time) {
   RunRecord record = make_run_record(simulation, options);
-  if (!axiom_from.empty()) {
-    HashedFile saved;
-    saved.path = std::filesystem::absolute(axiom_from).lexically_normal().string();
-    saved.sha256 = file_sha256(axiom_from).value_or("");
-    record.axiom_from = saved;
-  }
+  if (!axiom_from.empty()) record.axiom_from = hashed_file(axiom_from);
   if (in_time) record.continuous = continuous_record(*in_time);
   return record;
 }
@@ -35,24 +29,6 @@ bool unchanged(const HashedFile& file, const char* what, const std::string& reco
                  "sylva: error: %s: the %s has changed since %s was written (sha256 recorded %s, now %s)\n",
                  file.path.c_str(), what, record_file.c_str(), file.sha256.c_str(), now->c_str());
   return false;
-}
-
-io::InputKind kind_named(const std::string& name, const std::string& path) {
-  static const std::pair<const char*, io::InputKind> kKinds[] = {
-      {"view", io::InputKind::View},
-      {"animation", io::InputKind::Animation},
-      {"colormap", io::InputKind::Colormap},
-      {"materials", io::InputKind::Materials},
-      {"contour", io::InputKind::Contour},
-      {"contour-set", io::InputKind::ContourSet},
-      {"function", io::InputKind::Function},
-      {"function-set", io::InputKind::FunctionSet},
-      {"timed-function-set", io::InputKind::TimedFunctionSet},
-      {"parameters", io::InputKind::Parameters},
-      {"environment", io::InputKind::Environment}};
-  for (const auto& [kind_name, kind] : kKinds)
-    if (name == kind_name) return kind;
-  return io::input_kind_of(path);
 }
 
 }  // namespace
@@ -77,16 +53,17 @@ int run_reproduce(const std::string& file, const build::BuildOptions& build) {
   options.build.defines = record.defines;
   options.build.language = record.language;
   for (const HashedFile& input : record.inputs)
-    options.input_files.emplace_back(input.path, kind_named(input.kind, input.path), input.slot);
+    options.input_files.emplace_back(input.path, input_kind_named(input.kind, input.path), input.slot);
   options.seed = record.seed;
   options.keyed_random = record.keyed_random;
   options.cpfg_window_seeding = record.cpfg_window_seeding;
 
   Simulation simulation(record.model.path, options);
   const RunRecord now = make_run_record(simulation, options);
-  if (!record.compiler_version.empty() && now.compiler_version != record.compiler_version)
+  const std::string compiler_now = compiler_version(now.compiler);
+  if (!record.compiler_version.empty() && compiler_now != record.compiler_version)
     std::fprintf(stderr, "sylva: note: the model was compiled by %s, now by %s\n", record.compiler_version.c_str(),
-                 now.compiler_version.c_str());
+                 compiler_now.c_str());
   if (!record.sylva_version.empty() && now.sylva_version != record.sylva_version)
     std::fprintf(stderr, "sylva: note: %s was written by Sylva %s, this is Sylva %s\n", file.c_str(),
                  record.sylva_version.c_str(), now.sylva_version.c_str());

@@ -180,6 +180,10 @@ std::string translate_model(const std::string& model_path, const BuildOptions& o
   return lang::translate_file(model_path, translator_options(resolve(options))).cpp;
 }
 
+lang::ParsedModel parse_model(const std::string& model_path, const BuildOptions& options) {
+  return lang::parse_model_file(model_path, translator_options(resolve(options)));
+}
+
 namespace {
 
 void tell_waiting() { std::fprintf(stderr, "sylva: waiting for another run compiling this model\n"); }

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace sylva::lang {
+struct ParsedModel;  // lang/translator.h
+}
+
 namespace sylva::build {
 
 struct BuildOptions {
@@ -37,6 +41,8 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
 
 // The C++ the model translates to (what `sylva translate` prints).
 std::string translate_model(const std::string& model_path, const BuildOptions& options);
+// The model's IR (lang/model_ir.h), as translate_model reads it.
+lang::ParsedModel parse_model(const std::string& model_path, const BuildOptions& options);
 
 // Defaults resolved from the environment (the compiler: support/default_compiler.h).
 // The cache: $SYLVA_CACHE_DIR, $XDG_CACHE_HOME/sylva, then ~/.cache/sylva in

@@ -69,13 +69,6 @@ void check_parameters(const Plan& plan) {
                                  "': -D " + p.name + " would change nothing");
 }
 
-SimulationOptions base_options(const Plan& plan, const ExperimentOptions& options) {
-  SimulationOptions base = options.simulation;
-  for (const std::string& input : plan.inputs) base.input_files.emplace_back(input);
-  base.threads = 1;
-  return base;
-}
-
 int local_jobs(const ExperimentOptions& options) {
   return options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
@@ -118,33 +111,32 @@ std::string table_record(const Plan& plan, const RunRecord& model) {
   return record.dump(2) + "\n";
 }
 
-}  // namespace
-
-std::string run_to_text(const Plan& plan, const RunSpec& run, const SimulationOptions& base) {
-  return encode_result(execute_run(plan, run, base));
+SimulationOptions with_defines(SimulationOptions options, const RunSpec& run) {
+  for (const std::string& d : run.defines()) options.build.defines.push_back(d);
+  return options;
 }
 
-RunRecord prepare_experiment(const Plan& plan, const ExperimentOptions& options) {
+}  // namespace
+
+SimulationOptions run_options(const Plan& plan, const ExperimentOptions& options) {
+  SimulationOptions base = options.simulation;
+  for (const std::string& input : plan.inputs) base.input_files.emplace_back(input);
+  base.threads = 1;  // runs go side by side; each keeps to one core
+  return base;
+}
+
+PreparedExperiment prepare_experiment(const Plan& plan, const ExperimentOptions& options) {
   check_parameters(plan);
-  const std::vector<RunSpec> runs = plan_runs(plan);
-  const SimulationOptions base = base_options(plan, options);
+  PreparedExperiment prepared{plan_runs(plan), run_options(plan, options), {}};
   // Each -D set compiled once, side by side, before any run: a model that
   // does not compile stops the experiment here with the compiler's message.
-  const std::vector<std::vector<std::string>> sets = distinct_defines(runs);
-  std::vector<RunSpec> builds;
-  for (std::size_t k = 0; k < sets.size(); ++k) {
-    RunSpec spec;
-    spec.number = static_cast<long>(k);
-    for (const std::string& d : sets[k]) spec.values.emplace_back(d.substr(0, d.find('=')), d.substr(d.find('=') + 1));
-    builds.push_back(std::move(spec));
-  }
+  std::vector<RunSpec> builds = one_run_per_define_set(prepared.runs);
+  for (std::size_t k = 0; k < builds.size(); ++k) builds[k].number = static_cast<long>(k);
   LocalProcesses compilers(local_jobs(options), [&](const RunSpec& spec) {
     RunResult result;
     result.number = spec.number;
     try {
-      SimulationOptions o = base;
-      for (const std::string& d : spec.defines()) o.build.defines.push_back(d);
-      Simulation simulation(plan.model, o, [](const std::string&) {});
+      Simulation simulation(plan.model, with_defines(prepared.base, spec), [](const std::string&) {});
       result.ok = true;
     } catch (const std::exception& error) {
       result.error = error.what();
@@ -153,23 +145,38 @@ RunRecord prepare_experiment(const Plan& plan, const ExperimentOptions& options)
   });
   for (const RunResult& built : schedule(builds, {&compilers}))
     if (!built.ok)
-      throw ModelError(plan.model_at, "the model does not build with" + defines_text(sets[built.number]) + ":\n" + built.error);
+      throw ModelError(plan.model_at, "the model does not build with" + defines_text(builds[built.number].defines()) +
+                                          ":\n" + built.error);
   // The measures against the model's modules (the same in every -D set).
-  SimulationOptions first = base;
-  for (const std::string& d : runs.front().defines()) first.build.defines.push_back(d);
+  const SimulationOptions first = with_defines(prepared.base, prepared.runs.front());
   Simulation simulation(plan.model, first, [](const std::string&) {});
   const Measures measures(plan.measures, simulation.types());
-  return make_run_record(simulation, first);
+  prepared.model = make_run_record(simulation, first);
+  prepared.model.compiler_version = compiler_version(prepared.model.compiler);
+  return prepared;
+}
+
+RunResult run_in_own_process(const Plan& plan, const RunSpec& run, const SimulationOptions& base) {
+  LocalProcesses process(1, [&](const RunSpec& r) { return encode_result(execute_run(plan, r, base)); },
+                         plan.timeout_seconds);
+  process.start(run);
+  for (;;) {
+    std::vector<RunResult> done = process.collect(1000);
+    if (!done.empty()) return std::move(done.front());
+  }
 }
 
 ExperimentReport run_experiment(const Plan& plan, const ExperimentOptions& options) {
+  return run_experiment(plan, prepare_experiment(plan, options), options);
+}
+
+ExperimentReport run_experiment(const Plan& plan, const PreparedExperiment& prepared, const ExperimentOptions& options) {
   const auto started = std::chrono::steady_clock::now();
-  const RunRecord model = prepare_experiment(plan, options);
-  const std::vector<RunSpec> runs = plan_runs(plan);
-  const SimulationOptions base = base_options(plan, options);
+  const std::vector<RunSpec>& runs = prepared.runs;
   if (plan.save) fs::create_directories(plan.save->directory);
 
-  LocalProcesses local(local_jobs(options), [&](const RunSpec& run) { return run_to_text(plan, run, base); },
+  LocalProcesses local(local_jobs(options),
+                       [&](const RunSpec& run) { return encode_result(execute_run(plan, run, prepared.base)); },
                        plan.timeout_seconds);
   std::vector<Workers*> workers = {&local};
   if (options.remote) workers.push_back(options.remote);
@@ -186,7 +193,7 @@ ExperimentReport run_experiment(const Plan& plan, const ExperimentOptions& optio
   progress.finish();
 
   io::write_output_file(plan.output, table_text(plan, runs, results));
-  io::write_output_file(plan.output + kProvenanceSidecarSuffix, table_record(plan, model));
+  io::write_output_file(plan.output + kProvenanceSidecarSuffix, table_record(plan, prepared.model));
   if (plan.plot) write_plot(plan, runs, results);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return report;

@@ -24,16 +24,29 @@ struct ExperimentReport {
   double seconds = 0;
 };
 
+// What every run of a plan starts from: the build options and the plan's
+// inputs, one thread per run.
+SimulationOptions run_options(const Plan& plan, const ExperimentOptions& options);
+
+// A plan checked against its model, ready to run.
+struct PreparedExperiment {
+  std::vector<RunSpec> runs;
+  SimulationOptions base;  // run_options()
+  RunRecord model;         // what the table's provenance record says of the model
+};
+
 // Checks the plan against its model before anything runs: every -D set
 // compiles, every parameter is a name the model uses, every measure reads
 // modules the model declares. ModelError at the plan's line otherwise.
-// Returns what the table's provenance record says of the model.
-RunRecord prepare_experiment(const Plan& plan, const ExperimentOptions& options);
+PreparedExperiment prepare_experiment(const Plan& plan, const ExperimentOptions& options);
 
-// Prepares, runs every run, writes the table (and the plot the plan asks for).
+// Runs every run, writes the table (and the plot the plan asks for).
+ExperimentReport run_experiment(const Plan& plan, const PreparedExperiment& prepared, const ExperimentOptions& options);
+// Prepares, then runs.
 ExperimentReport run_experiment(const Plan& plan, const ExperimentOptions& options);
 
-// What a worker does with one run: its result as one line of text.
-std::string run_to_text(const Plan& plan, const RunSpec& run, const SimulationOptions& base);
+// What a worker does with one run: runs it in a process forked for it (a
+// crash, or the plan's timeout, ends only that process).
+RunResult run_in_own_process(const Plan& plan, const RunSpec& run, const SimulationOptions& base);
 
 }  // namespace sylva::experiment

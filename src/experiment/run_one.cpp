@@ -30,7 +30,7 @@ void save_outputs(const Plan& plan, const RunSpec& run, Simulation& simulation, 
   std::optional<geometry::Scene> scene;
   for (const std::string& format : plan.save->formats) {
     if (format == kStringFrame) {
-      simulation.write_string(stem + format);
+      write_recorded_string(stem + format, simulation);  // and its record (api/provenance.h)
       continue;
     }
     if (!scene) scene = simulation.scene();
@@ -61,13 +61,13 @@ RunResult execute_run(const Plan& plan, const RunSpec& run, const SimulationOpti
     SimulationOptions options = base;
     for (const std::string& define : run.defines()) options.build.defines.push_back(define);
     options.seed = run.seed;
-    options.threads = 1;  // runs go side by side; each keeps to one core
     Simulation simulation(plan.model, options, [](const std::string&) {});
     // Saved outputs record the run (api/provenance.h): `sylva run --reproduce` re-runs one alone.
-    const ProvenanceScope provenance(simulation, make_run_record(simulation, options));
+    const bool keep = saved(plan, run);
+    std::optional<ProvenanceScope> provenance;
+    if (keep) provenance.emplace(simulation, make_run_record(simulation, options));
     const Measures measures(plan.measures, simulation.types());
     simulation.begin();
-    const bool keep = saved(plan, run);
     if (!plan.times.empty()) {
       for (double t : plan.times) {
         simulation.advance_to(t);

@@ -29,8 +29,9 @@ struct RunResult {
   double seconds = 0;
 };
 
-// Runs `run` of `plan` in this process. Errors of the model become the
-// result's error; the rows measured before them are kept.
+// Runs `run` of `plan` in this process, from `base` (run_options() of the
+// plan, experiment/experiment.h) with the run's -D values and seed. Errors of
+// the model become the result's error; the rows measured before them are kept.
 RunResult execute_run(const Plan& plan, const RunSpec& run, const SimulationOptions& base);
 
 // The text that carries a result between processes (one line of JSON), and back.

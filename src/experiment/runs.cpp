@@ -48,11 +48,11 @@ std::vector<RunSpec> plan_runs(const Plan& plan) {
   return runs;
 }
 
-std::vector<std::vector<std::string>> distinct_defines(const std::vector<RunSpec>& runs) {
-  std::vector<std::vector<std::string>> out;
+std::vector<RunSpec> one_run_per_define_set(const std::vector<RunSpec>& runs) {
+  std::vector<RunSpec> out;
   std::set<std::vector<std::string>> seen;
   for (const RunSpec& run : runs)
-    if (seen.insert(run.defines()).second) out.push_back(run.defines());
+    if (seen.insert(run.defines()).second) out.push_back(run);
   return out;
 }
 

@@ -25,7 +25,8 @@ struct RunSpec {
 // All runs, by number. The grid varies the first parameter slowest.
 std::vector<RunSpec> plan_runs(const Plan& plan);
 
-// The distinct -D sets among `runs`, each once (a model is compiled once per set).
-std::vector<std::vector<std::string>> distinct_defines(const std::vector<RunSpec>& runs);
+// The first run of each distinct -D set among `runs` (a model is compiled
+// once per set).
+std::vector<RunSpec> one_run_per_define_set(const std::vector<RunSpec>& runs);
 
 }  // namespace sylva::experiment

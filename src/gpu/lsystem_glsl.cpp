@@ -22,15 +22,10 @@
 #include "gpu/lsystem_body_parser.h"
 #include "gpu/lsystem_tree.h"
 #include "gpu/number_text.h"
-#include "lang/lc_parser.h"
 #include "lang/model_ir.h"
-#include "lang/token.h"
 #include "lang/translator.h"
-#include "support/default_compiler.h"
 #include "support/diagnostic.h"
 #include "support/plugin_library.h"
-#include "support/subprocess.h"
-#include "support/whole_file.h"
 
 namespace sylva::gpu {
 namespace {
@@ -49,27 +44,13 @@ struct NotInClass {
 };
 
 lang::Model model_ir(const std::string& path, const build::BuildOptions& options) {
-  const WholeFile file = read_whole_file(path);
-  if (!file) throw NotInClass{path + ": cannot be read"};
-  if (options.language == "cpfg" || ((options.language.empty() || options.language == "auto") &&
-                                     lang::looks_like_cpfg(file.bytes)))
-    throw NotInClass{"a cpfg model (only L+C productions are translated to GLSL)"};
-  const std::string compiler = options.compiler.empty() ? default_compiler() : options.compiler;
-  const std::string runtime =
-      options.runtime_include_dir.empty() ? build::default_runtime_include_dir() : options.runtime_include_dir;
-  std::vector<std::string> argv = {compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1", "-DLINUX=1"};
-  for (const std::string& d : options.defines) argv.push_back("-D" + d);
-  argv.insert(argv.end(), {"-isystem", runtime});
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  argv.insert(argv.end(), {"-I", dir.empty() ? "." : dir});
-  for (const std::string& d : options.include_dirs) argv.insert(argv.end(), {"-I", d});
-  if (file.bytes.find("lpfgall.h") == std::string::npos) argv.insert(argv.end(), {"-include", "lpfgall.h"});
-  argv.push_back(path);
-  const ProcessResult pre = run_process(argv);
-  if (pre.exit_code != 0) throw NotInClass{"the preprocessor failed on the model"};
-  lang::TokenStream tokens = lang::tokenize_preprocessed(pre.out);
-  lang::Model model = lang::parse_lc(tokens, path);
-  if (model.files.empty()) model.files = tokens.files;
+  lang::Model model;
+  try {
+    model = build::parse_model(path, options).model;
+  } catch (const ModelError& error) {
+    throw NotInClass{error.what()};
+  }
+  if (model.cpfg) throw NotInClass{"a cpfg model (only L+C productions are translated to GLSL)"};
   return model;
 }
 

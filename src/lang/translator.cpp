@@ -53,7 +53,7 @@ std::vector<std::string> marker_files(const std::string& text) {
   return files;
 }
 
-Translation translate_cpfg(const std::string& model_path, const TranslatorOptions& options) {
+ParsedModel parse_cpfg_file(const std::string& model_path, const TranslatorOptions& options) {
   // cpfg models go through the C preprocessor (#define, #include) on their own.
   // cpfg's preprocessor (vlabcpp) passes a line whose `#` starts no directive
   // through as text (`#` is also a turtle symbol: `	#(0.1) F`), as does the
@@ -68,8 +68,11 @@ Translation translate_cpfg(const std::string& model_path, const TranslatorOption
   argv.push_back(model_path);
   ProcessResult pre = run_process(argv);
   if (pre.exit_code != 0) preprocessor_failed(model_path, pre);
-  Model model = parse_cpfg(pre.out, model_path);
+  return ParsedModel{parse_cpfg(pre.out, model_path), marker_files(pre.out)};
+}
 
+Translation translate_cpfg(const std::string& model_path, const TranslatorOptions& options) {
+  ParsedModel parsed = parse_cpfg_file(model_path, options);
   // The generated C++ needs the runtime: lpfgall.h and cpfg's helpers,
   // preprocessed in front of it.
   std::vector<std::string> rt = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1",
@@ -79,9 +82,9 @@ Translation translate_cpfg(const std::string& model_path, const TranslatorOption
   if (runtime.exit_code != 0) preprocessor_failed(model_path, runtime);
 
   Translation result;
-  result.cpp = runtime.out + "\n" + generate_cpp(model);
-  result.dependencies = marker_files(pre.out);
-  result.warnings = model.warnings;
+  result.cpp = runtime.out + "\n" + generate_cpp(parsed.model);
+  result.dependencies = std::move(parsed.dependencies);
+  result.warnings = parsed.model.warnings;
   for (const std::string& f : marker_files(runtime.out))
     if (f != "/dev/null") result.dependencies.push_back(f);
   return result;
@@ -125,14 +128,16 @@ bool looks_like_cpfg(const std::string& source) {
   return lsystem && end;
 }
 
-Translation translate_file(const std::string& model_path, const TranslatorOptions& options) {
-  std::string source = read_model_file(model_path);
-  const std::string& language = options.language;
-  if (language == "cpfg" || ((language.empty() || language == "auto") && looks_like_cpfg(source)))
-    return translate_cpfg(model_path, options);
+namespace {
+
+bool is_cpfg(const std::string& source, const std::string& language) {
+  if (language == "cpfg" || ((language.empty() || language == "auto") && looks_like_cpfg(source))) return true;
   if (!language.empty() && language != "auto" && language != "lc")
     throw ModelError("unknown model language '" + language + "' (expected cpfg or lc)");
+  return false;
+}
 
+ParsedModel parse_lc_file(const std::string& model_path, const std::string& source, const TranslatorOptions& options) {
   // lpfg preprocesses models on Linux with LINUX defined: models test it.
   std::vector<std::string> argv = {options.compiler, "-E", "-x", "c++", "-std=gnu++20", "-D__SYLVA__=1", "-DLINUX=1"};
   argv.insert(argv.end(), options.preprocessor_flags.begin(), options.preprocessor_flags.end());
@@ -154,9 +159,24 @@ Translation translate_file(const std::string& model_path, const TranslatorOption
 
   TokenStream tokens = tokenize_preprocessed(pre.out);
   Model model = parse_lc(tokens, model_path);
+  return ParsedModel{std::move(model), std::move(tokens.dependencies)};
+}
+
+}  // namespace
+
+ParsedModel parse_model_file(const std::string& model_path, const TranslatorOptions& options) {
+  const std::string source = read_model_file(model_path);
+  return is_cpfg(source, options.language) ? parse_cpfg_file(model_path, options)
+                                           : parse_lc_file(model_path, source, options);
+}
+
+Translation translate_file(const std::string& model_path, const TranslatorOptions& options) {
+  const std::string source = read_model_file(model_path);
+  if (is_cpfg(source, options.language)) return translate_cpfg(model_path, options);
+  ParsedModel parsed = parse_lc_file(model_path, source, options);
   Translation result;
-  result.cpp = generate_cpp(model);
-  result.dependencies = std::move(tokens.dependencies);
+  result.cpp = generate_cpp(parsed.model);
+  result.dependencies = std::move(parsed.dependencies);
   return result;
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "lang/model_ir.h"
+
 namespace sylva::lang {
 
 struct TranslatorOptions {
@@ -32,5 +34,14 @@ struct Translation {
 
 // Throws ModelError for a missing file, a preprocessor error or an L+C error.
 Translation translate_file(const std::string& model_path, const TranslatorOptions& options);
+
+// The Model IR of a model file, preprocessed (without a precompiled
+// runtime) and parsed in its language, and the files the preprocessor read:
+// translate_file's first half, for those that read the IR itself.
+struct ParsedModel {
+  Model model;
+  std::vector<std::string> dependencies;
+};
+ParsedModel parse_model_file(const std::string& model_path, const TranslatorOptions& options);
 
 }  // namespace sylva::lang

@@ -25,6 +25,7 @@
 
 #include "gpu/lsystem_glsl.h"
 #include "render/gl_headless_context.h"
+#include "render/gl_passes.h"
 #include "support/diagnostic.h"
 #include "support/plugin_library.h"
 
@@ -114,40 +115,7 @@ void main() {
 }
 )";
 
-GLuint compile(const std::string& source, const std::vector<std::pair<int, const char*>>& outputs, const char* what) {
-  const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    std::string log(8192, '\0');
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    glDeleteShader(shader);
-    throw ModelError(std::string("--gpu: ") + what + " does not compile: " + log.c_str());
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  for (const auto& [location, name] : outputs) glBindFragDataLocation(program, static_cast<GLuint>(location), name);
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    std::string log(8192, '\0');
-    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    glDeleteProgram(program);
-    throw ModelError(std::string("--gpu: ") + what + " does not link: " + log.c_str());
-  }
-  return program;
-}
-
-struct Layout {
-  long count = 0;
-  int width = 1, rows = 1;
-};
-
-GLuint make_texture(const Layout& l, GLenum internal, GLenum format, GLenum type, const void* data) {
+GLuint make_texture(const TexelRows& l, GLenum internal, GLenum format, GLenum type, const void* data) {
   GLuint texture = 0;
   glGenTextures(1, &texture);
   glBindTexture(GL_TEXTURE_2D, texture);
@@ -179,7 +147,7 @@ class Gl : public GlLsystemDeriver {
     HeadlessGlContext context;
     context_ = context.description();
     setup();
-    Layout src = layout_for(static_cast<long>(string.size()));
+    TexelRows src = layout_for(static_cast<long>(string.size()));
     std::vector<float> values(static_cast<std::size_t>(src.width) * src.rows * 4, 0.0f);
     std::vector<GLint> types(static_cast<std::size_t>(src.width) * src.rows, -1);
     for (std::size_t i = 0; i < string.size(); ++i) {
@@ -192,10 +160,11 @@ class Gl : public GlLsystemDeriver {
     types = {};
 
     const std::string prelude = std::string(kPrelude) + program.glsl;
-    const GLuint match = compile(prelude + kMatchMain, {{0, "sylva_result"}}, "fragment program 1 (the productions)");
-    const GLuint scan = compile(kScanSource, {{0, "sylva_result"}}, "fragment program 2 (the scan-add)");
-    const GLuint apply = compile(prelude + kApplyMain, {{0, "sylva_out_values"}, {1, "sylva_out_type"}},
-                                 "fragment program 3 (the successors)");
+    const GLuint match =
+        compile_fragment_program(prelude + kMatchMain, {{0, "sylva_result"}}, "fragment program 1 (the productions)");
+    const GLuint scan = compile_fragment_program(kScanSource, {{0, "sylva_result"}}, "fragment program 2 (the scan-add)");
+    const GLuint apply = compile_fragment_program(
+        prelude + kApplyMain, {{0, "sylva_out_values"}, {1, "sylva_out_type"}}, "fragment program 3 (the successors)");
 
     for (int step = 0; step < steps && src.count > 0; ++step) {
       // 1: production and successor length per module.
@@ -215,7 +184,7 @@ class Gl : public GlLsystemDeriver {
       const long total = static_cast<long>(last[0]) + last[1];
       check("the scan-add");
       // 3: the successors.
-      const Layout out = layout_for(total);
+      const TexelRows out = layout_for(total);
       const GLuint to_values = make_texture(out, GL_RGBA32F, GL_RGBA, GL_FLOAT, nullptr);
       const GLuint to_types = make_texture(out, GL_R32I, GL_RED_INTEGER, GL_INT, nullptr);
       if (total > 0) {
@@ -262,12 +231,12 @@ class Gl : public GlLsystemDeriver {
     HeadlessGlContext context;
     context_ = context.description();
     setup();
-    const Layout l = layout_for(static_cast<long>(lengths.size()));
+    const TexelRows l = layout_for(static_cast<long>(lengths.size()));
     // What fragment program 1 writes: (length, production).
     std::vector<GLint> texels(static_cast<std::size_t>(l.width) * l.rows * 2, 0);
     for (std::size_t i = 0; i < lengths.size(); ++i) texels[2 * i] = lengths[i];
     const GLuint matched = make_texture(l, GL_RG32I, GL_RG_INTEGER, GL_INT, texels.data());
-    const GLuint scan = compile(kScanSource, {{0, "sylva_result"}}, "fragment program 2 (the scan-add)");
+    const GLuint scan = compile_fragment_program(kScanSource, {{0, "sylva_result"}}, "fragment program 2 (the scan-add)");
     const GLuint sums = scan_passes(scan, matched, l);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, l.width, l.rows, GL_RG_INTEGER, GL_INT, texels.data());
@@ -308,19 +277,11 @@ class Gl : public GlLsystemDeriver {
     for (GLuint p : programs) glDeleteProgram(p);
   }
 
-  Layout layout_for(long count) const {
-    const int widest = row_width_ > 0 ? std::min(row_width_, max_size_) : max_size_;
-    Layout l;
-    l.count = count;
-    l.width = static_cast<int>(std::max<long>(1, std::min<long>(count, widest)));
-    l.rows = static_cast<int>(std::max<long>(1, (count + l.width - 1) / l.width));
-    if (l.rows > max_size_)
-      throw ModelError("--gpu: " + std::to_string(count) + " modules do not fit a texture of at most " +
-                       std::to_string(max_size_) + " x " + std::to_string(max_size_) + " texels");
-    return l;
+  TexelRows layout_for(long count) const {
+    return texel_rows(count, row_width_ > 0 ? row_width_ : max_size_, max_size_, "modules");
   }
 
-  void target(const std::vector<GLuint>& textures, const Layout& l) {
+  void target(const std::vector<GLuint>& textures, const TexelRows& l) {
     std::vector<GLenum> buffers;
     for (std::size_t k = 0; k < textures.size(); ++k) {
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k), GL_TEXTURE_2D,
@@ -337,7 +298,7 @@ class Gl : public GlLsystemDeriver {
     glViewport(0, 0, l.width, l.rows);
   }
 
-  void string_uniforms(GLuint p, const LsystemProgram& program, const Layout& src, GLuint types, GLuint values) {
+  void string_uniforms(GLuint p, const LsystemProgram& program, const TexelRows& src, GLuint types, GLuint values) {
     bind(p, "sylva_types", 0, types);
     bind(p, "sylva_values", 1, values);
     set_int(p, "sylva_n", src.count);
@@ -347,7 +308,7 @@ class Gl : public GlLsystemDeriver {
 
   // The Hillis-Steele passes from the (length, production) texture `matched`:
   // returns the texture of (exclusive sum, length), bound as the target.
-  GLuint scan_passes(GLuint scan, GLuint matched, const Layout& l) {
+  GLuint scan_passes(GLuint scan, GLuint matched, const TexelRows& l) {
     glUseProgram(scan);
     set_int(scan, "sylva_n", l.count);
     set_int(scan, "sylva_width", l.width);

@@ -455,7 +455,9 @@ class GlRenderer final : public RasterRenderer {
                const ImageSettings& settings, int width, int height) override {
     return gl::draw_image(scene, palette, view, settings, width, height);
   }
-  std::string encode_png(const std::string& path, const Image& image) override { return gl::encode_png(path, image); }
+  std::string encode_png(const std::string& path, const Image& image, const std::string& provenance) override {
+    return gl::encode_png(path, image, provenance);
+  }
 };
 
 }  // namespace

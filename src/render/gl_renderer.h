@@ -11,7 +11,9 @@ namespace sylva::io::gl {
 Image draw_image(const geometry::Scene& scene, const geometry::Palette& palette, const geometry::ViewParameters& view,
                  const ImageSettings& settings, int width, int height);
 
-// `image` as an 8-bit RGB PNG, with libpng. `path` names the file in errors.
-std::string encode_png(const std::string& path, const Image& image);
+// `image` as an 8-bit RGB PNG, with libpng, with a tEXt chunk
+// "sylva:provenance" holding `provenance` when it is not empty. `path` names
+// the file in errors.
+std::string encode_png(const std::string& path, const Image& image, const std::string& provenance);
 
 }  // namespace sylva::io::gl

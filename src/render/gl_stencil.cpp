@@ -12,6 +12,7 @@
 
 #include "gpu/stencil_deriver.h"
 #include "render/gl_headless_context.h"
+#include "render/gl_passes.h"
 #include "support/diagnostic.h"
 #include "support/plugin_library.h"
 
@@ -70,47 +71,6 @@ void main() {
 }
 )";
 
-GLuint make_program() {
-  const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
-  glShaderSource(shader, 1, &kFragmentSource, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = "";
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw ModelError(std::string("--gpu: the stencil shader does not compile: ") + log);
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glBindFragDataLocation(program, 0, "result");
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = "";
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    glDeleteProgram(program);
-    throw ModelError(std::string("--gpu: the stencil shader does not link: ") + log);
-  }
-  return program;
-}
-
-struct Layout {
-  long count;
-  int width, rows;
-};
-
-Layout layout_for(long count, int max_size) {
-  Layout l{count, static_cast<int>(std::min<long>(count, max_size)), 0};
-  l.rows = static_cast<int>((count + l.width - 1) / l.width);
-  if (l.rows > max_size)
-    throw ModelError("--gpu: " + std::to_string(count) + " points do not fit a texture of at most " +
-                     std::to_string(max_size) + " x " + std::to_string(max_size) + " texels");
-  return l;
-}
-
 // Texels of 1, 2 or 4 floats: R32F for scalars, RG32F for 2D points (half the
 // memory of RGBA32F, so twice the points fit llvmpipe's texture limit), RGBA32F
 // for 3D and 4D points.
@@ -125,7 +85,7 @@ TexelFormat texel_format(int dim) {
   return {4, GL_RGBA32F, GL_RGBA};
 }
 
-GLuint make_texture(const Layout& l, const TexelFormat& f, const float* data) {
+GLuint make_texture(const TexelRows& l, const TexelFormat& f, const float* data) {
   GLuint texture = 0;
   glGenTextures(1, &texture);
   glBindTexture(GL_TEXTURE_2D, texture);
@@ -152,7 +112,7 @@ class GlStencilDeriver : public StencilDeriver {
     max_size = std::min({max_size, max_viewport[0], max_viewport[1]});
 
     const TexelFormat f = texel_format(dim);
-    Layout src = layout_for(n0, max_size);
+    TexelRows src = texel_rows(n0, max_size, max_size, "points");
     std::vector<float> texels(static_cast<std::size_t>(src.width) * src.rows * f.channels, 0.0f);
     for (long q = 0; q < n0; ++q)
       for (int d = 0; d < dim; ++d) texels[q * f.channels + d] = static_cast<float>(points[q * dim + d]);
@@ -160,7 +120,7 @@ class GlStencilDeriver : public StencilDeriver {
     GLuint from = make_texture(src, f, texels.data());
     texels = {};
 
-    const GLuint program = make_program();
+    const GLuint program = compile_fragment_program(kFragmentSource, {{0, "result"}}, "the stencil shader");
     glUseProgram(program);
     std::vector<float> weights(kMaxCoefficients, 0.0f);
     for (std::size_t i = 0; i < s.c.size(); ++i) weights[i] = static_cast<float>(s.c[i]);
@@ -193,7 +153,7 @@ class GlStencilDeriver : public StencilDeriver {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
 
     for (int step = 0; step < steps; ++step) {
-      const Layout out = layout_for(s.successors(src.count), max_size);
+      const TexelRows out = texel_rows(s.successors(src.count), max_size, max_size, "points");
       const GLuint to = make_texture(out, f, nullptr);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, to, 0);
       if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)

@@ -31,7 +31,7 @@ void no_flush(png_structp) {}
 
 }  // namespace
 
-std::string gl::encode_png(const std::string& path, const Image& image) {
+std::string gl::encode_png(const std::string& path, const Image& image, const std::string& provenance) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3)
     throw ModelError(SourceLocation{path, 0, 0}, "cannot write an empty or malformed image");
@@ -42,6 +42,13 @@ std::string gl::encode_png(const std::string& path, const Image& image) {
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (std::size_t y = 0; y < rows.size(); ++y)
     rows[y] = const_cast<png_bytep>(image.rgb.data() + y * static_cast<std::size_t>(image.width) * 3);
+  // The run record (api/provenance.h) as a tEXt chunk before the image data.
+  std::string key = "sylva:provenance", text = provenance;
+  png_text chunk{};
+  chunk.compression = PNG_TEXT_COMPRESSION_NONE;
+  chunk.key = key.data();
+  chunk.text = text.data();
+  chunk.text_length = text.size();
 
   PngWriteStruct w;
   w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -55,6 +62,7 @@ std::string gl::encode_png(const std::string& path, const Image& image) {
   png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_IHDR(w.png, w.info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (!provenance.empty()) png_set_text(w.png, w.info, &chunk, 1);
   png_write_info(w.png, w.info);
   png_write_image(w.png, rows.data());
   png_write_end(w.png, nullptr);

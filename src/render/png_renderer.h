@@ -6,7 +6,6 @@
 #include <array>
 #include <cstdint>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "geometry/camera.h"
@@ -72,15 +71,9 @@ Image render_image(const geometry::Scene& scene, const geometry::Palette& palett
                    const ImageSettings& settings, int width, int height);
 
 // Writes `image` as an 8-bit RGB PNG, whole or not at all ("-": to standard
-// output). Throws ModelError naming the path when it cannot be written.
-void write_png(const std::string& path, const Image& image);
-// The same with a tEXt chunk "sylva:provenance" holding `provenance` (the
-// run record's JSON, api/provenance.h) when it is not empty.
-void write_png(const std::string& path, const Image& image, const std::string& provenance);
-
-// `png`, a whole PNG file, with a tEXt chunk `keyword` = `text` (Latin-1;
-// keyword 1 to 79 characters) inserted after the IHDR chunk. Returns `png`
-// unchanged when it does not start with a PNG signature and IHDR.
-std::string png_with_text(std::string_view png, const std::string& keyword, const std::string& text);
+// output), with a tEXt chunk "sylva:provenance" holding `provenance` (the run
+// record's JSON, api/provenance.h) when it is not empty. Throws ModelError
+// naming the path when it cannot be written.
+void write_png(const std::string& path, const Image& image, const std::string& provenance = "");
 
 }  // namespace sylva::io

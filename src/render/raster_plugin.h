@@ -16,8 +16,9 @@ class RasterRenderer {
   // See render_image.
   virtual Image render(const geometry::Scene& scene, const geometry::Palette& palette,
                        const geometry::ViewParameters& view, const ImageSettings& settings, int width, int height) = 0;
-  // `image` as PNG bytes; `path` names the file in errors.
-  virtual std::string encode_png(const std::string& path, const Image& image) = 0;
+  // `image` as PNG bytes, with the run record `provenance` in a tEXt chunk
+  // when it is not empty; `path` names the file in errors.
+  virtual std::string encode_png(const std::string& path, const Image& image, const std::string& provenance) = 0;
 
  protected:
   ~RasterRenderer() = default;

@@ -5,6 +5,8 @@
 // points, edges the distinct pairs of consecutive corners.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -104,6 +106,19 @@ inline Levels run_levels(const std::string& name, int levels, std::vector<std::s
   }
   out.messages = run.messages;
   return out;
+}
+
+// Subdivision of the icosahedron keeps its twelve corners at valence 5 and
+// gives every new vertex valence 6.
+inline void expect_icosahedral_valences(const Levels& run) {
+  for (const TriMesh& m : run.meshes) {
+    int fives = 0;
+    for (const auto& n : m.neighbours()) {
+      fives += n.size() == 5;
+      EXPECT_TRUE(n.size() == 5 || n.size() == 6);
+    }
+    EXPECT_EQ(fives, 12);
+  }
 }
 
 }  // namespace sylva::test::examples

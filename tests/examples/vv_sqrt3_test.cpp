@@ -125,14 +125,7 @@ TEST(VvSqrt3Test, PointsAndFacesFollowKobbeltsRules) {
   }
   // Old vertices keep their valence (5 on the icosahedron's corners), every
   // centroid has valence 6.
-  for (const TriMesh& m : run.meshes) {
-    int fives = 0;
-    for (const auto& n : m.neighbours()) {
-      fives += n.size() == 5;
-      EXPECT_TRUE(n.size() == 5 || n.size() == 6);
-    }
-    EXPECT_EQ(fives, 12);
-  }
+  expect_icosahedral_valences(run);
 }
 
 }  // namespace

@@ -96,14 +96,7 @@ TEST(VvSurfacesTest, LoopOnTheIcosahedronCountsAndEuler) {
   const Levels run = run_levels("vv-loop", 4);
   expect_counts(run, "vv-loop", 20);
   // Only the twelve old corners have valence 5.
-  for (const TriMesh& m : run.meshes) {
-    int fives = 0;
-    for (const auto& n : m.neighbours()) {
-      fives += n.size() == 5;
-      EXPECT_TRUE(n.size() == 5 || n.size() == 6);
-    }
-    EXPECT_EQ(fives, 12);
-  }
+  expect_icosahedral_valences(run);
 }
 
 TEST(VvSurfacesTest, LoopPointsFollowTheMasksAndApproachTheLimit) {

@@ -33,7 +33,7 @@ TEST(PlanRuns, TheGridVariesTheFirstParameterSlowestAndRepeatsSeedsAcrossPoints)
     EXPECT_EQ(runs[i].replicate, static_cast<int>(i % 2));
     EXPECT_EQ(runs[i].seed, replicate_seed(10, static_cast<int>(i % 2)));
   }
-  EXPECT_EQ(distinct_defines(runs).size(), 6u);
+  EXPECT_EQ(one_run_per_define_set(runs).size(), 6u);
   EXPECT_NE(replicate_seed(10, 0), replicate_seed(10, 1));
   EXPECT_NE(replicate_seed(10, 0), replicate_seed(11, 0));
 }
