@@ -266,6 +266,12 @@ std::string compiler_version(const std::string& compiler) {
 }
 
 RunRecord make_run_record(const Simulation& simulation, const SimulationOptions& options) {
+  RunRecord r = make_lazy_run_record(simulation, options);
+  r.compiler_version = compiler_version(r.compiler);
+  return r;
+}
+
+RunRecord make_lazy_run_record(const Simulation& simulation, const SimulationOptions& options) {
   RunRecord r;
   r.sylva_version = SYLVA_VERSION;
   r.model = hashed_file(simulation.model_path());

@@ -118,10 +118,12 @@ io::InputKind input_kind_named(const std::string& name, const std::string& path)
 
 // What a run's outputs will record that does not change while it runs: the
 // model, the inputs, definitions, seed and compiler of `options` (as given
-// to the Simulation's constructor). Files are hashed now; the compiler's
-// version is left to complete_run_record, so that a run writing nothing
-// never starts the compiler.
+// to the Simulation's constructor). Files are hashed now.
 RunRecord make_run_record(const Simulation& simulation, const SimulationOptions& options);
+// The same without the compiler's version, which complete_run_record asks
+// for when an output is written: a run that writes nothing never starts the
+// compiler.
+RunRecord make_lazy_run_record(const Simulation& simulation, const SimulationOptions& options);
 // The first line of `compiler --version` ("" when it cannot be run), run
 // once per compiler per process.
 std::string compiler_version(const std::string& compiler);

@@ -9,7 +9,7 @@ namespace sylva::app {
 
 RunRecord run_record(const Simulation& simulation, const SimulationOptions& options, const std::string& axiom_from,
                      const continuous::ContinuousSettings* in_time) {
-  RunRecord record = make_run_record(simulation, options);
+  RunRecord record = make_lazy_run_record(simulation, options);
   if (!axiom_from.empty()) record.axiom_from = hashed_file(axiom_from);
   if (in_time) record.continuous = continuous_record(*in_time);
   return record;
@@ -60,10 +60,9 @@ int run_reproduce(const std::string& file, const build::BuildOptions& build) {
 
   Simulation simulation(record.model.path, options);
   const RunRecord now = make_run_record(simulation, options);
-  const std::string compiler_now = compiler_version(now.compiler);
-  if (!record.compiler_version.empty() && compiler_now != record.compiler_version)
+  if (!record.compiler_version.empty() && now.compiler_version != record.compiler_version)
     std::fprintf(stderr, "sylva: note: the model was compiled by %s, now by %s\n", record.compiler_version.c_str(),
-                 compiler_now.c_str());
+                 now.compiler_version.c_str());
   if (!record.sylva_version.empty() && now.sylva_version != record.sylva_version)
     std::fprintf(stderr, "sylva: note: %s was written by Sylva %s, this is Sylva %s\n", file.c_str(),
                  record.sylva_version.c_str(), now.sylva_version.c_str());

@@ -152,7 +152,6 @@ PreparedExperiment prepare_experiment(const Plan& plan, const ExperimentOptions&
   Simulation simulation(plan.model, first, [](const std::string&) {});
   const Measures measures(plan.measures, simulation.types());
   prepared.model = make_run_record(simulation, first);
-  prepared.model.compiler_version = compiler_version(prepared.model.compiler);
   return prepared;
 }
 
