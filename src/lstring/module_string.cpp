@@ -13,7 +13,6 @@
 namespace sylva {
 namespace {
 
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
 // Buffers this large are mapped pages of their own: growing one moves its
 // pages (mremap) instead of copying them, and the pages already touched stay
 // touched, so a string that grows step after step is faulted in once.
