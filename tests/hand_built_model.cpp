@@ -28,12 +28,17 @@ constexpr Formatter kFormatters[] = {&format_floats<0>, &format_floats<1>, &form
 void write_modules(abi::ModuleBuffer* out, std::initializer_list<Written> modules) {
   for (const Written& m : modules) {
     const std::size_t param_size = m.params.size() * sizeof(float);
-    out->reserve_more(abi::encoded_module_size(param_size));
-    out->put_id(m.id);
-    if (!param_size) continue;
-    std::memcpy(out->data + out->size, m.params.data(), param_size);
-    out->size += param_size;
-    out->put_id(m.id);
+    out->reserve_more(abi::encoded_module_size(m.id, param_size));
+    unsigned char* at = out->data + out->size;
+    if (!param_size) {
+      abi::put_parameterless(at, m.id);
+    } else {
+      abi::put_leading_id(at, m.id);
+      std::memcpy(at, m.params.data(), param_size);
+      at += param_size;
+      abi::put_trailing_id(at, m.id);
+    }
+    out->size = static_cast<std::size_t>(at - out->data);
   }
 }
 

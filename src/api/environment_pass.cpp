@@ -124,13 +124,13 @@ void EnvironmentPass::run(derive::Derivation& derivation, const turtle::TurtleSe
     for (std::size_t k = 0; k < collector.queries.size(); ++k) {
       const auto& target = collector.targets[k];
       if (!target.params) continue;  // produced by a rule: its neighbours are not the string's
-      const std::size_t at = static_cast<std::size_t>(target.params - view.data) - sizeof(ModuleId);
+      const std::size_t at = static_cast<std::size_t>(target.params - view.data) - abi::encoded_id_size(target.id);
       const std::size_t next = view.next(at);
       if (next >= view.end) continue;
       const ModuleId following = view.id_at(next);
       env::ModuleRecord& record = collector.queries[k].following;
       record.symbol = types.name(following);
-      record.parameters = parameters_as_floats(types, following, view.data + next + sizeof(ModuleId));
+      record.parameters = parameters_as_floats(types, following, module_params(view.data, next));
     }
   }
 

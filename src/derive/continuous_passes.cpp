@@ -31,7 +31,7 @@ void Derivation::map_state() {
     for (std::uint32_t k = 0; k < params.size(); ++k) {
       const abi::ParamField& p = params[k];
       if (!p.type || (p.type->kind != abi::ParamKind::kFloat && p.type->kind != abi::ParamKind::kDouble)) continue;
-      state_slots_.push_back({pos + sizeof(ModuleId) + p.offset, k, p.type->kind == abi::ParamKind::kDouble});
+      state_slots_.push_back({pos + abi::encoded_id_size(id) + p.offset, k, p.type->kind == abi::ParamKind::kDouble});
       ++module.slots;
     }
     state_modules_.push_back(module);

@@ -378,7 +378,7 @@ void Derivation::write_parameters(const ParameterWrites& writes) {
     const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(w->count);
     if (offset + bytes > types_[view.id_at(pos)].param_size)
       throw std::logic_error("a parameter write past the module's parameters");
-    std::memcpy(data + pos + sizeof(ModuleId) + offset, writes.values().data() + w->value_offset, bytes);
+    std::memcpy(module_params(data, pos) + offset, writes.values().data() + w->value_offset, bytes);
   }
 }
 

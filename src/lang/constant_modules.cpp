@@ -194,10 +194,12 @@ std::optional<Literal> literal_argument(const Code& arg) {
   return literal(text);
 }
 
+template <void (*put)(unsigned char*&, abi::ModuleId)>
 void append_id(abi::ModuleId id, std::string& bytes) {
-  char raw[sizeof id];
-  std::memcpy(raw, &id, sizeof raw);
-  bytes.append(raw, sizeof raw);
+  unsigned char raw[4];
+  unsigned char* end = raw;
+  put(end, id);
+  bytes.append(reinterpret_cast<const char*>(raw), static_cast<std::size_t>(end - raw));
 }
 
 }  // namespace
@@ -206,14 +208,18 @@ std::optional<std::string> constant_module_bytes(abi::ModuleId id, const std::ve
                                                  const std::vector<Code>& args) {
   if (args.size() != param_types.size()) return std::nullopt;
   std::string bytes;
-  append_id(id, bytes);
+  if (args.empty()) {
+    append_id<abi::put_parameterless>(id, bytes);
+    return bytes;
+  }
+  append_id<abi::put_leading_id>(id, bytes);
   for (std::size_t k = 0; k < args.size(); ++k) {
     const Appender append = appender_for(param_types[k]);
     if (!append) return std::nullopt;
     const std::optional<Literal> value = literal_argument(args[k]);
     if (!value || !append(*value, bytes)) return std::nullopt;
   }
-  if (!args.empty()) append_id(id, bytes);
+  append_id<abi::put_trailing_id>(id, bytes);
   return bytes;
 }
 

@@ -207,12 +207,17 @@ void ModuleString::set_written_size(std::size_t size) {
 }
 
 void ModuleString::append_module(ModuleId id, const void* params, std::size_t param_size) {
-  buffer_.reserve_more(abi::encoded_module_size(param_size));
-  buffer_.put_id(id);
-  if (!param_size) return;
-  std::memcpy(buffer_.data + buffer_.size, params, param_size);
-  buffer_.size += param_size;
-  buffer_.put_id(id);
+  buffer_.reserve_more(abi::encoded_module_size(id, param_size));
+  unsigned char* at = buffer_.data + buffer_.size;
+  if (!param_size) {
+    abi::put_parameterless(at, id);
+  } else {
+    abi::put_leading_id(at, id);
+    std::memcpy(at, params, param_size);
+    at += param_size;
+    abi::put_trailing_id(at, id);
+  }
+  buffer_.size = static_cast<std::size_t>(at - buffer_.data);
 }
 
 void ModuleString::assign(const unsigned char* bytes, std::size_t n) {

@@ -17,17 +17,16 @@ class BranchPartners;
 class PrependBuffer;
 
 // Reading an encoded string.
-inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) {
-  ModuleId id;
-  std::memcpy(&id, data + offset, sizeof id);
-  return id;
-}
+inline ModuleId module_id_at(const unsigned char* data, std::size_t offset) { return abi::leading_id(data + offset); }
 // The id of the module that ends at `offset`.
 inline ModuleId module_id_before(const unsigned char* data, std::size_t offset) {
-  return module_id_at(data, offset - sizeof(ModuleId));
+  return abi::trailing_id(data + offset);
 }
 inline const unsigned char* module_params(const unsigned char* data, std::size_t offset) {
-  return data + offset + sizeof(ModuleId);
+  return data + offset + (data[offset] != abi::kWideId ? 1 : 3);
+}
+inline unsigned char* module_params(unsigned char* data, std::size_t offset) {
+  return data + offset + (data[offset] != abi::kWideId ? 1 : 3);
 }
 
 // Whether string buffers of several megabytes ask for transparent huge pages

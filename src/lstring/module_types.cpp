@@ -9,7 +9,7 @@ namespace sylva {
 
 ModuleTypes::ModuleTypes(std::vector<Type> types) : types_(std::move(types)) {
   for (std::size_t k = 0; k < types_.size(); ++k) {
-    encoded_sizes_.push_back(static_cast<std::uint32_t>(abi::encoded_module_size(types_[k].param_size)));
+    encoded_sizes_.push_back(static_cast<std::uint32_t>(abi::encoded_module_size(static_cast<ModuleId>(k), types_[k].param_size)));
     by_name_.emplace(types_[k].name, static_cast<ModuleId>(k));
   }
   classify_params_text();

@@ -15,7 +15,7 @@ namespace {
 
 thread_local RunBudget* active_budget = nullptr;
 
-constexpr std::size_t kSmallestModuleBytes = abi::encoded_module_size(0);  // its id alone
+constexpr std::size_t kSmallestModuleBytes = abi::encoded_module_size(0, 0);  // a one-byte id alone
 // String memory the default module limit allows each module: see default_run_limits.
 constexpr std::size_t kMemoryPerModule = 64;
 
@@ -74,12 +74,19 @@ void RunBudget::check_time() const {
 }
 
 void RunBudget::check_modules(const unsigned char* data, std::size_t bytes) const {
-  if (limits_.max_modules == 0 || sizes_ == nullptr || bytes / kSmallestModuleBytes <= limits_.max_modules) return;
+  const std::size_t max = limits_.max_modules;
+  if (max == 0 || sizes_ == nullptr || bytes / kSmallestModuleBytes <= max) return;
+  // Counted until the bytes left could not hold enough modules to cross the
+  // limit: a string of modules larger than the smallest stops early (koch's
+  // six-byte modules after a twelfth of the string), one of one-byte modules
+  // is counted whole.
   std::size_t count = 0;
-  for (std::size_t at = 0; at < bytes; at += sizes_[module_id_at(data, at)])
-    if (++count > limits_.max_modules)
-      exceeded("the string has more than " + std::to_string(limits_.max_modules) + " modules, the limit",
-               "--max-modules N raises it");
+  for (std::size_t at = 0; at < bytes;) {
+    at += sizes_[module_id_at(data, at)];
+    if (++count > max)
+      exceeded("the string has more than " + std::to_string(max) + " modules, the limit", "--max-modules N raises it");
+    if (at >= bytes || (bytes - at) / kSmallestModuleBytes <= max - count) return;
+  }
 }
 
 void RunBudget::check_memory(std::size_t more) const {

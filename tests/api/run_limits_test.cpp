@@ -9,6 +9,8 @@
 #include <string>
 
 #include "api/simulation.h"
+#include "lstring/module_string.h"
+#include "lstring/module_types.h"
 #include "lstring/run_limits.h"
 #include "test_support.h"
 
@@ -53,6 +55,37 @@ TEST(RunLimits, DefaultsProtectTheMachine) {
   EXPECT_EQ(max_modules_for_memory(std::size_t{1} << 30), std::size_t{1} << 24);
   EXPECT_EQ(max_modules_for_memory(0), 0u);
   EXPECT_EQ(limits.timeout_seconds, 0);
+}
+
+// Strings of six-byte P(float) and one-byte Q modules against a limit of 10:
+// the count stops early only where the bytes left cannot cross it.
+TEST(RunLimits, ModulesAreCountedWhateverTheirSizesAndOrder) {
+  const ModuleTypes types({{"P", sizeof(float)}, {"Q", 0}});
+  auto string_of = [&](const std::string& pattern) {
+    ModuleString s;
+    const float x = 1;
+    for (char c : pattern) c == 'P' ? s.append_module(0, &x, sizeof x) : s.append_module(1, nullptr, 0);
+    return s;
+  };
+  RunBudget budget;
+  budget.set_limits(RunLimits{10, 0, 0});
+  budget.set_module_sizes(types.encoded_sizes());
+  auto crosses = [&](const std::string& pattern) {
+    const ModuleString s = string_of(pattern);
+    try {
+      budget.check_modules(s.data(), s.size_bytes());
+    } catch (const LimitExceeded&) {
+      return true;
+    }
+    return false;
+  };
+  EXPECT_FALSE(crosses("PPPQQQQQQQ"));    // 25 bytes, 10 modules
+  EXPECT_TRUE(crosses("PPPQQQQQQQQ"));    // 26 bytes, 11
+  EXPECT_TRUE(crosses("QQQQQQQQPPP"));    // 26 bytes, 11, the small ones first
+  EXPECT_FALSE(crosses("PPPPPPPPPP"));    // 60 bytes, 10
+  EXPECT_TRUE(crosses("PPPPPPPPPPP"));    // 66 bytes, 11
+  EXPECT_FALSE(crosses("QQQQQQQQQQ"));    // 10 bytes, 10: not counted
+  EXPECT_TRUE(crosses("QPQPQPQPQPQ"));    // 11 modules
 }
 
 TEST(RunLimits, ModulesStopTheStepThatCrossesThem) {

@@ -100,7 +100,7 @@ class ContextMatcherTest : public ::testing::Test {
     if (!ok) return "no match";
     std::string out;
     for (const unsigned char* p : params) {
-      const std::size_t at = static_cast<std::size_t>(p - s.data()) - sizeof(ModuleId);
+      const std::size_t at = static_cast<std::size_t>(p - s.data()) - 1;  // one-byte ids
       const ModuleId m = module_id_at(s.data(), at);
       std::string name = m == rt::mid::SB ? "[" : m == rt::mid::EB ? "]" : types_.name(m);
       if (types_[m].param_size == sizeof(int)) {
@@ -337,17 +337,17 @@ TEST_F(ContextMatcherTest, BracketsCountEvenWhenFiltered) {
 // Partners worked by hand: offsets are 8 bytes for A(int) and B(int) ([id]
 // [int][id]), 2 for C, [ and ].
 TEST_F(ContextMatcherTest, BranchIndexPairsEachBracketWithItsPartner) {
-  ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 8, B 10, [ 18, C 20, ] 22, ] 24, C 26
+  ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 6, B 7, [ 13, C 14, ] 15, ] 16, C 17
   BranchIndex index;
   index.prepare(s.view(types_));
-  EXPECT_EQ(index.partner(8), 24u);
-  EXPECT_EQ(index.partner(18), 22u);
-  EXPECT_EQ(index.partner(22), 18u);
-  EXPECT_EQ(index.partner(24), 8u);
-  ModuleString stray = parse("] C [ C");  // ] 0, C 2, [ 4, C 6
+  EXPECT_EQ(index.partner(6), 16u);
+  EXPECT_EQ(index.partner(13), 15u);
+  EXPECT_EQ(index.partner(15), 13u);
+  EXPECT_EQ(index.partner(16), 6u);
+  ModuleString stray = parse("] C [ C");  // ] 0, C 1, [ 2, C 3
   index.prepare(stray.view(types_));
   EXPECT_EQ(index.partner(0), BranchIndex::kUnmatched);
-  EXPECT_EQ(index.partner(4), BranchIndex::kUnmatched);
+  EXPECT_EQ(index.partner(2), BranchIndex::kUnmatched);
 }
 
 // Skips and matches through the index give what walking the string gives,

@@ -88,7 +88,7 @@ std::vector<float> parameters_of(const Simulation& d, ModuleId id) {
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
     if (v.id_at(at) != id) continue;
     std::vector<float> out(d.types()[id].param_size / sizeof(float));
-    std::memcpy(out.data(), v.data + at + sizeof(ModuleId), out.size() * sizeof(float));
+    std::memcpy(out.data(), module_params(v.data, at), out.size() * sizeof(float));
     return out;
   }
   return {};

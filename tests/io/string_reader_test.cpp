@@ -33,8 +33,8 @@ TEST(StringReader, ReadsEveryParameterWithItsType) {
   const ModuleString s =
       parse_string("A(0.100000001,-3,(1,2.5,-0.25),1,0.33333333333333331)  B\n\tC((0.5,-2),255,[3,4])\n", types, "s");
   ASSERT_EQ(s.count_modules(types), 3u);
-  // A: [id] float int V3f bool double [id]
-  std::size_t at = sizeof(ModuleId);
+  // A: [id] float int V3f bool double [id], one-byte ids
+  std::size_t at = 1;
   EXPECT_EQ(param_at<float>(s, at), 0.1f);
   EXPECT_EQ(param_at<int>(s, at + 4), -3);
   const V3f v = param_at<V3f>(s, at + 8);
@@ -43,9 +43,9 @@ TEST(StringReader, ReadsEveryParameterWithItsType) {
   EXPECT_EQ(v.z, -0.25f);
   EXPECT_TRUE(param_at<bool>(s, at + 20));
   EXPECT_EQ(param_at<double>(s, at + 21), 1.0 / 3.0);
-  at += types[0].param_size + sizeof(ModuleId);
+  at += types[0].param_size + 1;
   EXPECT_EQ(module_id_at(s.data(), at), 1);  // B: [id]
-  at += types.encoded_size(1) + sizeof(ModuleId);
+  at += types.encoded_size(1) + 1;
   const V2d w = param_at<V2d>(s, at);
   EXPECT_EQ(w.x, 0.5);
   EXPECT_EQ(w.y, -2.0);
@@ -100,7 +100,7 @@ const std::string kAllMouseFields =
 
 TEST(StringReader, AStructWithAllItsFieldsReadsBack) {
   const ModuleString s = parse_string("M({" + kAllMouseFields + "})", mouse_types(), "s");
-  const MouseStatus m = param_at<MouseStatus>(s, sizeof(ModuleId));
+  const MouseStatus m = param_at<MouseStatus>(s, 1);  // past a one-byte id
   EXPECT_EQ(m.viewY, 3);
   EXPECT_EQ(m.selectPoint.y, 2);
   EXPECT_TRUE(m.lbPushed);

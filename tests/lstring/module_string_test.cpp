@@ -17,7 +17,8 @@ namespace sylva::test {
 namespace {
 
 // SB, EB, then P with a double, Q with nothing, R with three ints: modules of
-// 12, 2 and 16 bytes, so a walk that got a size wrong lands off a boundary.
+// 10, 1 and 14 bytes (one-byte ids), so a walk that got a size wrong lands
+// off a boundary.
 class ModuleStringTest : public ::testing::Test {
  protected:
   static constexpr ModuleId kSB = 0, kEB = 1, kP = 2, kQ = 3, kR = 4;
@@ -58,7 +59,7 @@ class ModuleStringTest : public ::testing::Test {
 TEST_F(ModuleStringTest, EachModuleIsItsIdItsParametersAndItsIdAgain) {
   ModuleString s;
   add_r(s, 7, 8, 9);
-  ASSERT_EQ(s.size_bytes(), 2 * sizeof(ModuleId) + 3 * sizeof(int));
+  ASSERT_EQ(s.size_bytes(), 1 + 3 * sizeof(int) + 1);
   EXPECT_EQ(module_id_at(s.data(), 0), kR);
   int params[3];
   std::memcpy(params, module_params(s.data(), 0), sizeof params);
@@ -71,8 +72,8 @@ TEST_F(ModuleStringTest, EachModuleIsItsIdItsParametersAndItsIdAgain) {
 TEST_F(ModuleStringTest, AModuleWithoutParametersIsItsIdAlone) {
   ModuleString s;
   add(s, kQ);
-  ASSERT_EQ(s.size_bytes(), sizeof(ModuleId));
-  EXPECT_EQ(types_.encoded_size(kQ), sizeof(ModuleId));
+  ASSERT_EQ(s.size_bytes(), 1u);
+  EXPECT_EQ(types_.encoded_size(kQ), 1u);
   EXPECT_EQ(module_id_at(s.data(), 0), kQ);
   EXPECT_EQ(module_id_before(s.data(), s.size_bytes()), kQ);
   add_p(s, 4);
@@ -80,7 +81,42 @@ TEST_F(ModuleStringTest, AModuleWithoutParametersIsItsIdAlone) {
   const StringView v = s.view(types_);
   EXPECT_EQ(forward_ids(v), (std::vector<ModuleId>{kQ, kP, kQ}));
   EXPECT_EQ(backward_ids(v), (std::vector<ModuleId>{kQ, kP, kQ}));
-  EXPECT_EQ(v.previous(v.previous(v.end)), sizeof(ModuleId));
+  EXPECT_EQ(v.previous(v.previous(v.end)), 1u);
+}
+
+// Ids from 255 on: 0xFF and the id's two bytes (low first) at the start, the
+// two bytes and 0xFF at the end, and 0xFF id 0xFF without parameters; so
+// they walk both ways beside one-byte ids, even where a parameter or the id
+// itself holds a 0xFF byte.
+TEST(ModuleStringWideIds, TakeThreeBytesAtEachEnd) {
+  std::vector<ModuleTypes::Type> table(600);
+  for (std::size_t k = 0; k < table.size(); ++k) table[k].name = "M" + std::to_string(k);
+  table[0x1FF].param_size = sizeof(float);
+  const ModuleTypes types(std::move(table));
+  EXPECT_EQ(types.encoded_size(254), 1u);
+  EXPECT_EQ(types.encoded_size(255), 4u);
+  EXPECT_EQ(types.encoded_size(0x1FF), 4u + 6u);
+
+  ModuleString s;
+  const float param = -1;  // bits 0xBF800000
+  s.append_module(0x1FF, &param, sizeof param);
+  s.append_module(7, nullptr, 0);
+  s.append_module(0x12C, nullptr, 0);
+  s.append_module(254, nullptr, 0);
+  const unsigned char expected[] = {0xFF, 0xFF, 0x01, 0x00, 0x00, 0x80, 0xBF, 0xFF, 0x01, 0xFF,
+                                    7,    0xFF, 0x2C, 0x01, 0xFF, 254};
+  ASSERT_EQ(s.size_bytes(), sizeof expected);
+  EXPECT_EQ(std::memcmp(s.data(), expected, sizeof expected), 0);
+
+  const StringView v = s.view(types);
+  std::vector<ModuleId> forward, backward;
+  for (std::size_t at = v.begin; at < v.end; at = v.next(at)) forward.push_back(v.id_at(at));
+  for (std::size_t at = v.end; at > v.begin; at = v.previous(at)) backward.push_back(module_id_before(v.data, at));
+  EXPECT_EQ(forward, (std::vector<ModuleId>{0x1FF, 7, 0x12C, 254}));
+  EXPECT_EQ(backward, (std::vector<ModuleId>{254, 0x12C, 7, 0x1FF}));
+  float read;
+  std::memcpy(&read, module_params(s.data(), 0), sizeof read);
+  EXPECT_EQ(read, -1.0f);
 }
 
 TEST_F(ModuleStringTest, WalksForwardAndBackward) {
@@ -89,8 +125,8 @@ TEST_F(ModuleStringTest, WalksForwardAndBackward) {
   EXPECT_EQ(forward_ids(v), (std::vector<ModuleId>{kP, kQ, kR, kSB, kQ, kEB, kP}));
   EXPECT_EQ(backward_ids(v), (std::vector<ModuleId>{kP, kEB, kQ, kSB, kR, kQ, kP}));
   EXPECT_EQ(s.count_modules(types_), 7u);
-  // 12 + 2 + 16 + 2 + 2 + 2 + 12 bytes.
-  EXPECT_EQ(s.size_bytes(), 48u);
+  // 10 + 1 + 14 + 1 + 1 + 1 + 10 bytes.
+  EXPECT_EQ(s.size_bytes(), 38u);
   double last;
   std::memcpy(&last, module_params(s.data(), v.previous(v.end)), sizeof last);
   EXPECT_EQ(last, -2);
@@ -99,8 +135,8 @@ TEST_F(ModuleStringTest, WalksForwardAndBackward) {
 TEST_F(ModuleStringTest, AViewCoversPartOfTheString) {
   const ModuleString s = sample();
   StringView part = s.view(types_);
-  part.begin = 12 + 2;  // from R
-  part.end = part.begin + 16 + 2 + 2 + 2;  // through the branch
+  part.begin = 10 + 1;  // from R
+  part.end = part.begin + 14 + 1 + 1 + 1;  // through the branch
   EXPECT_EQ(forward_ids(part), (std::vector<ModuleId>{kR, kSB, kQ, kEB}));
   EXPECT_EQ(backward_ids(part), (std::vector<ModuleId>{kEB, kQ, kSB, kR}));
 }
@@ -155,7 +191,7 @@ TEST_F(ModuleStringTest, MovesAssignsAndTruncates) {
   ModuleString copy;
   copy.assign(moved.data(), moved.size_bytes());
   EXPECT_EQ(std::memcmp(copy.data(), moved.data(), size), 0);
-  copy.truncate(12 + 2);  // P(1.5) Q
+  copy.truncate(10 + 1);  // P(1.5) Q
   EXPECT_EQ(forward_ids(copy.view(types_)), (std::vector<ModuleId>{kP, kQ}));
   copy.clear();
   EXPECT_TRUE(copy.empty());
@@ -176,7 +212,7 @@ TEST_F(ModuleStringTest, WindowsWriteInPlaceAndSpillWhenFull) {
   EXPECT_TRUE(first.writes_in_window());
   EXPECT_EQ(first.data(), whole.data());
   EXPECT_EQ(second.data(), whole.data() + 4096);
-  for (int k = 0; k < 400; ++k) add_p(second, k);  // 16 + 400 * 12 bytes: past 4096
+  for (int k = 0; k < 420; ++k) add_p(second, k);  // 14 + 420 * 10 bytes: past 4096
   EXPECT_FALSE(second.writes_in_window());
   const StringView v = second.view(types_);
   std::size_t at = v.next(v.begin);
@@ -187,21 +223,21 @@ TEST_F(ModuleStringTest, WindowsWriteInPlaceAndSpillWhenFull) {
   whole.reserve_unwritten_keeping(64 << 20);
   std::memcpy(&value, module_params(whole.data(), 0), sizeof value);
   EXPECT_EQ(value, 1.5);
-  whole.set_written_size(12);
+  whole.set_written_size(10);
   EXPECT_EQ(forward_ids(whole.view(types_)), std::vector<ModuleId>{kP});
 }
 
 // Module starts a parallel pass knows: kept while the string only grows,
 // cut with it, dropped when it is replaced or emptied, carried by moves.
 TEST_F(ModuleStringTest, KnownModuleStartsFollowTheString) {
-  ModuleString s = sample();  // P 0, Q 12, R 14, [ 30, Q 32, ] 34, P 36
-  s.set_known_module_starts({0, 14, 32});
+  ModuleString s = sample();  // P 0, Q 10, R 11, [ 25, Q 26, ] 27, P 28
+  s.set_known_module_starts({0, 11, 26});
   add(s, kQ);
-  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 14, 32}));
-  s.truncate(30);
-  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 14}));
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 11, 26}));
+  s.truncate(25);
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 11}));
   ModuleString moved = std::move(s);
-  EXPECT_EQ(moved.known_module_starts(), (std::vector<std::size_t>{0, 14}));
+  EXPECT_EQ(moved.known_module_starts(), (std::vector<std::size_t>{0, 11}));
   moved.assign(sample().data(), sample().size_bytes());
   EXPECT_TRUE(moved.known_module_starts().empty());
   moved.set_known_module_starts({0});
@@ -218,7 +254,7 @@ TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
     b.prepend(q.data(), q.size_bytes());
     b.prepend(p.data(), p.size_bytes());
   }
-  EXPECT_EQ(b.size_bytes(), 1000 * (12u + 2u));
+  EXPECT_EQ(b.size_bytes(), 1000 * (10u + 1u));
   const StringView v{b.data(), b.begin(), b.end(), types_.encoded_sizes()};
   const std::vector<ModuleId> ids = forward_ids(v);
   ASSERT_EQ(ids.size(), 2000u);
@@ -244,7 +280,7 @@ TEST_F(ModuleStringTest, AStringTakesWhatAPrependBufferBuilt) {
   EXPECT_EQ(forward_ids(s.view(types_)), (std::vector<ModuleId>{kP, kQ, kQ, kQ}));
   EXPECT_EQ(b.size_bytes(), 0u);
   b.prepend(q.data(), q.size_bytes());
-  EXPECT_EQ(b.size_bytes(), 2u);
+  EXPECT_EQ(b.size_bytes(), 1u);
   add(s, kSB);  // the string grows on in the buffer it took
   EXPECT_EQ(backward_ids(s.view(types_)), (std::vector<ModuleId>{kSB, kQ, kQ, kQ, kP}));
 }

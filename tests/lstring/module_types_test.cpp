@@ -19,8 +19,8 @@ TEST(ModuleTypes, NamesIdsAndSizes) {
   EXPECT_EQ(types.name(0), "A");
   EXPECT_EQ(types.find("B"), ModuleId{1});
   EXPECT_EQ(types.find("C"), std::nullopt);
-  EXPECT_EQ(types.encoded_size(0), 8u + 2 * sizeof(ModuleId));
-  EXPECT_EQ(types.encoded_sizes()[1], sizeof(ModuleId));  // a module without parameters is its id alone
+  EXPECT_EQ(types.encoded_size(0), 8u + 2u);      // [id] parameters [id], one-byte ids
+  EXPECT_EQ(types.encoded_sizes()[1], 1u);  // a module without parameters is its id alone
   std::string text = "A(";
   types.format_params(0, nullptr, text);
   EXPECT_EQ(text, "A(1,2");

@@ -48,7 +48,7 @@ inline std::vector<float> module_floats(const Simulation& s, abi::ModuleId id, i
   for (std::size_t at = v.begin; at < v.end; at = v.next(at)) {
     if (v.id_at(at) != id || seen++ != nth) continue;
     std::vector<float> out(static_cast<std::size_t>(count));
-    std::memcpy(out.data(), v.data + at + sizeof(abi::ModuleId), sizeof(float) * out.size());
+    std::memcpy(out.data(), module_params(v.data, at), sizeof(float) * out.size());
     return out;
   }
   return {};

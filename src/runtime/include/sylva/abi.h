@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 14;
+inline constexpr std::uint32_t kAbiVersion = 15;
 
 using ModuleId = std::uint16_t;
 
@@ -23,8 +23,64 @@ using ModuleId = std::uint16_t;
 // walked backward as well as forward with nothing but the encoded size of
 // each id. Parameters are packed in declaration order without padding and
 // read with memcpy.
-inline constexpr std::size_t encoded_module_size(std::size_t param_size) {
-  return param_size ? param_size + 2 * sizeof(ModuleId) : sizeof(ModuleId);
+//
+// An id below kWideId (nearly every model's every id: the predefined modules
+// and the first 150 of the model's own) is one byte, so a parameterless
+// module takes one byte, as a symbol does in cpfg. A wider id is kWideId and
+// the id's two bytes at the start, the two bytes and kWideId at the end; a
+// parameterless module with a wide id is [kWideId][id][kWideId]. The byte at
+// either end of a module thus tells whether its id is wide.
+inline constexpr unsigned char kWideId = 0xFF;
+
+// Bytes the id takes at each end of a module with parameters (the parameters
+// begin that far in).
+inline constexpr std::size_t encoded_id_size(ModuleId id) { return id < kWideId ? 1 : 3; }
+
+inline constexpr std::size_t encoded_module_size(ModuleId id, std::size_t param_size) {
+  if (id < kWideId) return param_size ? param_size + 2 : 1;
+  return param_size ? param_size + 6 : 4;
+}
+
+// The most bytes a module with `param_size` bytes of parameters can take.
+inline constexpr std::size_t largest_module_size(std::size_t param_size) { return encoded_module_size(kWideId, param_size); }
+
+// The id of the module starting at `at`, and of the one ending at `end`.
+inline ModuleId leading_id(const unsigned char* at) {
+  if (__builtin_expect(at[0] != kWideId, 1)) return at[0];
+  ModuleId id;
+  std::memcpy(&id, at + 1, sizeof id);
+  return id;
+}
+inline ModuleId trailing_id(const unsigned char* end) {
+  if (__builtin_expect(end[-1] != kWideId, 1)) return end[-1];
+  ModuleId id;
+  std::memcpy(&id, end - 3, sizeof id);
+  return id;
+}
+
+// Writes a module's first id, its last id (after its parameters), or the
+// whole of a module without parameters, at `at`, and advances `at`.
+inline void put_leading_id(unsigned char*& at, ModuleId id) {
+  if (id < kWideId) {
+    *at++ = static_cast<unsigned char>(id);
+    return;
+  }
+  at[0] = kWideId;
+  std::memcpy(at + 1, &id, sizeof id);
+  at += 3;
+}
+inline void put_trailing_id(unsigned char*& at, ModuleId id) {
+  if (id < kWideId) {
+    *at++ = static_cast<unsigned char>(id);
+    return;
+  }
+  std::memcpy(at, &id, sizeof id);
+  at[2] = kWideId;
+  at += 3;
+}
+inline void put_parameterless(unsigned char*& at, ModuleId id) {
+  put_leading_id(at, id);
+  if (id >= kWideId) *at++ = kWideId;
 }
 
 // A growable byte buffer of encoded modules. The engine allocates it and
@@ -37,10 +93,6 @@ struct ModuleBuffer {
 
   void reserve_more(std::size_t bytes) {
     if (size + bytes > capacity) grow(this, size + bytes);
-  }
-  void put_id(ModuleId id) {
-    std::memcpy(data + size, &id, sizeof id);
-    size += sizeof id;
   }
 };
 

@@ -48,9 +48,9 @@ inline void put_param(unsigned char*& at, const T& value) {
   at += sizeof value;
 }
 
-// Bytes one module with parameters T... takes in a string.
+// Room for one module with parameters T... in a string, whatever its id.
 template <class... T>
-inline constexpr std::size_t module_bytes = abi::encoded_module_size(params_size<T...>);
+inline constexpr std::size_t module_bytes = abi::largest_module_size(params_size<T...>);
 
 // Writes one module at `at` (room for it has been reserved) and advances
 // `at`. Arguments convert to the declared parameter types as they would in a
@@ -58,12 +58,12 @@ inline constexpr std::size_t module_bytes = abi::encoded_module_size(params_size
 // then writes them one after another.
 template <class... T>
 inline void put_module(unsigned char*& at, abi::ModuleId id, std::type_identity_t<T>... values) {
-  std::memcpy(at, &id, sizeof id);
-  at += sizeof id;
   if constexpr (params_size<T...> != 0) {
+    abi::put_leading_id(at, id);
     (put_param<T>(at, values), ...);
-    std::memcpy(at, &id, sizeof id);
-    at += sizeof id;
+    abi::put_trailing_id(at, id);
+  } else {
+    abi::put_parameterless(at, id);
   }
 }
 
