@@ -81,9 +81,9 @@ class StringReader {
     if (!empty) ++given;
     if (given != type.param_count) fail(name_at, count_message(type, given));
     if (given > 0) {
-      if (!type.parse_params) fail(name_at, "the parameters of module '" + type.name + "' cannot be read back");
+      if (!types_.can_read_params(id)) fail(name_at, "the parameters of module '" + type.name + "' cannot be read back");
       abi::TextSource in{text_.data() + open + 1, text_.data() + close};
-      if (!type.parse_params(&in, params))
+      if (!types_.read_params(id, &in, params))
         fail(static_cast<std::size_t>(in.at - text_.data()),
              "expected " + std::string(in.expected ? in.expected : "a parameter value") + " in the parameters of '" +
                  type.name + "'");

@@ -92,7 +92,7 @@ class CppGenerator {
               " return ::sylva::rt::param_field<decltype(SylvaS::" + field + ")>(" + quoted(field) +
               ", __builtin_offsetof(SylvaS, " + field + "));" +
               " else return ::sylva::abi::ParamField{" + quoted(field) + ", 0, nullptr}; }(),";
-    text += " }; return {sylva_fields, " + std::to_string(s.fields.size()) + "}; }";
+    text += " }; return {sylva_fields, " + std::to_string(s.fields.size()) + ", " + quoted(s.name) + "}; }";
     return text;
   }
 

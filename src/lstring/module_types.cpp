@@ -110,4 +110,13 @@ void ModuleTypes::format_params(ModuleId id, const unsigned char* params, std::s
   type.format_params(params, &sink);
 }
 
+bool ModuleTypes::can_read_params(ModuleId id) const {
+  return types_[id].parse_params || (!cpfg_ && params_text_from_table_[id]);
+}
+
+bool ModuleTypes::read_params(ModuleId id, abi::TextSource* in, unsigned char* params) const {
+  if (types_[id].parse_params) return types_[id].parse_params(in, params);
+  return can_read_params(id) && read_params_text(this->params(id), in, params);
+}
+
 }  // namespace sylva

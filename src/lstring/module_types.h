@@ -23,7 +23,8 @@ class ModuleTypes {
     std::string name;
     std::uint32_t param_size = 0;
     void (*format_params)(const unsigned char*, abi::TextSink*) = nullptr;
-    // Reading the parameters back (null: they cannot be; cpfg's modules).
+    // Reading the parameters back (null: from their table where they are
+    // written from it, see read_params; cpfg's modules cannot be).
     std::uint32_t param_count = 0;
     bool (*parse_params)(abi::TextSource*, unsigned char*) = nullptr;
     // The parameters' types and offsets, param_count of them (null: not
@@ -59,6 +60,10 @@ class ModuleTypes {
   // the parameters' table (lstring/param_text.h) where it describes them,
   // by the model's own printer otherwise.
   void format_params(ModuleId id, const unsigned char* params, std::string& out) const;
+  // Whether a module's parameters can be read back from that text (not
+  // cpfg's, not text), and reading them (see abi::ModuleType::parse_params).
+  bool can_read_params(ModuleId id) const;
+  bool read_params(ModuleId id, abi::TextSource* in, unsigned char* params) const;
 
  private:
   std::vector<Type> types_;

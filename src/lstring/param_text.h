@@ -32,4 +32,12 @@ bool params_text_from_table(std::span<const abi::ParamField> params, NumberStyle
 void append_params_text(std::span<const abi::ParamField> params, const unsigned char* block, NumberStyle style,
                         std::string& out);
 
+// Reads back what append_params_text writes in the exact style, as a
+// model's own reader would (sylva/runtime/parse_params.h): the values
+// separated by commas into `block`, each struct with all its fields by name
+// in any order, stopping before the closing parenthesis. False, with
+// `in->expected` and `in->at` saying what was expected where, on bad text,
+// and for text (a pointer cannot be read back).
+bool read_params_text(std::span<const abi::ParamField> params, abi::TextSource* in, unsigned char* block);
+
 }  // namespace sylva

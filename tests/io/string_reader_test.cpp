@@ -15,7 +15,7 @@ namespace {
 
 ModuleTypes test_types() {
   auto entry = [](const abi::ModuleType& t) {
-    return ModuleTypes::Type{t.name, t.param_size, t.format_params, t.param_count, t.parse_params};
+    return ModuleTypes::Type{t.name, t.param_size, t.format_params, t.param_count, t.parse_params, t.params};
   };
   return ModuleTypes({entry(rt::module_type<float, int, V3f, bool, double>("A")), entry(rt::module_type<>("B")),
                       entry(rt::module_type<V2d, unsigned char, float[2]>("C"))});

@@ -49,14 +49,19 @@ TEST(ModuleTypes, FromAModelTheEngineSuppliesThePredefinedPrinters) {
   std::string text;
   types.format_params(rt::mid::F, reinterpret_cast<const unsigned char*>(&f), text);
   EXPECT_EQ(text, "2.5");
-  EXPECT_NE(types[rt::mid::F].parse_params, nullptr);
+  ASSERT_TRUE(types.can_read_params(rt::mid::F));
+  const std::string saved = "-0.75";
+  abi::TextSource in{saved.c_str(), saved.c_str() + saved.size()};
+  float read = 0;
+  ASSERT_TRUE(types.read_params(rt::mid::F, &in, reinterpret_cast<unsigned char*>(&read)));
+  EXPECT_EQ(read, -0.75f);
   EXPECT_FALSE(types.cpfg());
 
   // A cpfg model's strings are cpfg's: printed, never read back.
   descriptor.flags = abi::kModelCpfg;
   const ModuleTypes cpfg = ModuleTypes::from_model(descriptor);
   EXPECT_TRUE(cpfg.cpfg());
-  EXPECT_EQ(cpfg[rt::mid::F].parse_params, nullptr);
+  EXPECT_FALSE(cpfg.can_read_params(rt::mid::F));
   const float third = 1.0f / 3.0f;
   text.clear();
   cpfg.format_params(rt::mid::F, reinterpret_cast<const unsigned char*>(&third), text);

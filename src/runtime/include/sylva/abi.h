@@ -14,7 +14,7 @@
 
 namespace sylva::abi {
 
-inline constexpr std::uint32_t kAbiVersion = 15;
+inline constexpr std::uint32_t kAbiVersion = 16;
 
 using ModuleId = std::uint16_t;
 
@@ -138,6 +138,7 @@ struct ParamType {
   std::uint32_t count = 0;
   const ParamField* fields = nullptr;
   std::uint32_t field_count = 0;
+  const char* name = nullptr;  // a struct's name, where its fields are listed
 };
 
 // A module's parameter (unnamed, at its offset in the parameter block) or a
@@ -158,7 +159,9 @@ struct ModuleType {
   std::uint32_t param_count;
   // Reads back what format_params wrote: `param_count` values separated by
   // commas into `params`, stopping before the closing parenthesis; false
-  // (with `in->expected` set) on bad text. Null: they cannot be read back.
+  // (with `in->expected` set) on bad text. Null: the engine reads them from
+  // `params`' table where it writes them from it, and they cannot be read
+  // back otherwise.
   bool (*parse_params)(TextSource* in, unsigned char* params);
   // The parameters' types and offsets, `param_count` of them (null for a
   // predefined module: the engine has its own).

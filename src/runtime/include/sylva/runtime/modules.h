@@ -166,14 +166,20 @@ void format_params(const unsigned char* params, abi::TextSink* out) {
 
 namespace sylva::rt {
 
-// Parameters the engine can write from their table get no printer of their
-// own: one less template for the model to compile.
+// Parameters the engine can write from their table get no printer and no
+// reader of their own (the engine reads them from the table too): two fewer
+// templates for the model to compile, the reader of a struct by far the
+// larger.
 template <class... T>
 abi::ModuleType module_type(const char* name) {
   decltype(abi::ModuleType::format_params) printer = nullptr;
-  if constexpr (!(text_from_table<T>() && ...)) printer = &format_params<T...>;
+  decltype(abi::ModuleType::parse_params) reader = nullptr;
+  if constexpr (!(text_from_table<T>() && ...)) {
+    printer = &format_params<T...>;
+    reader = &parse_params<T...>;
+  }
   return abi::ModuleType{name, static_cast<std::uint32_t>(params_size<T...>), printer,
-                         static_cast<std::uint32_t>(sizeof...(T)), &parse_params<T...>, param_fields<T...>()};
+                         static_cast<std::uint32_t>(sizeof...(T)), reader, param_fields<T...>()};
 }
 
 // A predefined module's entry: the engine supplies its printer, reader and

@@ -18,6 +18,7 @@ namespace sylva::rt {
 struct FieldList {
   const abi::ParamField* fields;
   std::uint32_t count;
+  const char* name = nullptr;  // the struct's
 };
 
 template <class T>
@@ -50,7 +51,7 @@ abi::ParamType describe_param() {
   } else if constexpr (requires(const T* p) { sylva_struct_fields(p); }) {
     // Structs of the model: the translator writes these overloads.
     const FieldList fields = sylva_struct_fields(static_cast<const T*>(nullptr));
-    return {ParamKind::kStruct, size, nullptr, 0, fields.fields, fields.count};
+    return {ParamKind::kStruct, size, nullptr, 0, fields.fields, fields.count, fields.name};
   } else if constexpr (std::is_class_v<T>) {
     return {ParamKind::kStruct, size};
   } else {
@@ -115,11 +116,11 @@ abi::ParamField param_field(const char* name, std::size_t offset) {
 
 inline sylva::rt::FieldList sylva_struct_fields(const EA20Array*) {
   static const sylva::abi::ParamField fields[] = {SYLVA_FIELD(EA20Array, data)};
-  return {fields, 1};
+  return {fields, 1, "EA20Array"};
 }
 inline sylva::rt::FieldList sylva_struct_fields(const SurfaceObj*) {
   static const sylva::abi::ParamField fields[] = {SYLVA_FIELD(SurfaceObj, points)};
-  return {fields, 1};
+  return {fields, 1, "SurfaceObj"};
 }
 inline sylva::rt::FieldList sylva_struct_fields(const MouseStatus*) {
   static const sylva::abi::ParamField fields[] = {
@@ -128,13 +129,13 @@ inline sylva::rt::FieldList sylva_struct_fields(const MouseStatus*) {
       SYLVA_FIELD(MouseStatus, selectDepth), SYLVA_FIELD(MouseStatus, selectPoint),
       SYLVA_FIELD(MouseStatus, keypressed),  SYLVA_FIELD(MouseStatus, lbPushed), SYLVA_FIELD(MouseStatus, lbDown),
       SYLVA_FIELD(MouseStatus, lbReleased)};
-  return {fields, 12};
+  return {fields, 12, "MouseStatus"};
 }
 inline sylva::rt::FieldList sylva_struct_fields(const CameraPosition*) {
   static const sylva::abi::ParamField fields[] = {
       SYLVA_FIELD(CameraPosition, position), SYLVA_FIELD(CameraPosition, lookat), SYLVA_FIELD(CameraPosition, head),
       SYLVA_FIELD(CameraPosition, left),     SYLVA_FIELD(CameraPosition, up),     SYLVA_FIELD(CameraPosition, scale)};
-  return {fields, 6};
+  return {fields, 6, "CameraPosition"};
 }
 
 #undef SYLVA_FIELD
