@@ -224,6 +224,7 @@ void Simulation::check_string_limits() {
 RunBudget::Scope Simulation::drawing() {
   budget_.set_step(step_number(), true);
   budget_.check_time();
+  budget_.check_drawn_modules(derivation_->string().data(), derivation_->string().size_bytes());
   return RunBudget::Scope(budget_);
 }
 
@@ -344,6 +345,7 @@ std::string Simulation::turtle_trace(int view) {
 }
 
 void Simulation::write(const std::vector<std::string>& paths) {
+  if (paths.empty()) return;
   const RunBudget::Scope bounded = drawing();
   std::map<int, geometry::Scene> scenes;  // by view
   for (const std::string& path : paths)

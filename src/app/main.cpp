@@ -61,14 +61,14 @@ void add_limit_options(CLI::App& run, sylva::RunLimits& limits) {
            const std::optional<std::size_t> bytes = sylva::parse_byte_size(text);
            if (!bytes) throw CLI::ValidationError("--max-memory", "expected a size such as 4G or 512M, not '" + text + "'");
            limits.max_memory = *bytes;
-           limits.max_modules = sylva::max_modules_for_memory(*bytes);
+           limits.max_drawn_modules = sylva::max_modules_for_memory(*bytes);
          },
          "Stop a run whose strings would take more than SIZE (bytes, or with K, M, G; default half the "
-         "physical memory, " + std::to_string(defaults.max_memory >> 20) + "M; 0: none)")
+         "physical memory, " + std::to_string(defaults.max_memory >> 20) + "M; 0: none), or that would draw "
+         "more modules than a module per 64 bytes of it (" + std::to_string(defaults.max_drawn_modules) + ")")
       ->type_name("SIZE");
   run.add_option("--max-modules", limits.max_modules,
-                 "Stop a run whose string grows past N modules (default " + std::to_string(defaults.max_modules) +
-                     ", from the memory limit; 0: none)")
+                 "Stop a run whose string grows past N modules (default: none, the memory limit bounds it)")
       ->type_name("N");
   run.add_option("--timeout", limits.timeout_seconds,
                  "Stop a run (derivation, interpretation and outputs) that takes more than SECONDS (default: none)")

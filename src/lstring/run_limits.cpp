@@ -40,7 +40,7 @@ RunLimits default_run_limits() {
   const std::size_t physical = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size)
                                                           : std::size_t{8} << 30;
   limits.max_memory = physical / 2;
-  limits.max_modules = max_modules_for_memory(limits.max_memory);
+  limits.max_drawn_modules = max_modules_for_memory(limits.max_memory);
   return limits;
 }
 
@@ -73,9 +73,8 @@ void RunBudget::check_time() const {
   }
 }
 
-void RunBudget::check_modules(const unsigned char* data, std::size_t bytes) const {
-  const std::size_t max = limits_.max_modules;
-  if (max == 0 || sizes_ == nullptr || bytes / kSmallestModuleBytes <= max) return;
+bool RunBudget::more_modules_than(std::size_t max, const unsigned char* data, std::size_t bytes) const {
+  if (max == 0 || sizes_ == nullptr || bytes / kSmallestModuleBytes <= max) return false;
   // Counted until the bytes left could not hold enough modules to cross the
   // limit: a string of modules larger than the smallest stops early (koch's
   // six-byte modules after a twelfth of the string), one of one-byte modules
@@ -83,10 +82,23 @@ void RunBudget::check_modules(const unsigned char* data, std::size_t bytes) cons
   std::size_t count = 0;
   for (std::size_t at = 0; at < bytes;) {
     at += sizes_[module_id_at(data, at)];
-    if (++count > max)
-      exceeded("the string has more than " + std::to_string(max) + " modules, the limit", "--max-modules N raises it");
-    if (at >= bytes || (bytes - at) / kSmallestModuleBytes <= max - count) return;
+    if (++count > max) return true;
+    if (at >= bytes || (bytes - at) / kSmallestModuleBytes <= max - count) return false;
   }
+  return false;
+}
+
+void RunBudget::check_modules(const unsigned char* data, std::size_t bytes) const {
+  if (more_modules_than(limits_.max_modules, data, bytes))
+    exceeded("the string has more than " + std::to_string(limits_.max_modules) + " modules, the limit",
+             "--max-modules N raises it");
+}
+
+void RunBudget::check_drawn_modules(const unsigned char* data, std::size_t bytes) const {
+  if (more_modules_than(limits_.max_drawn_modules, data, bytes))
+    exceeded("the string has more than " + std::to_string(limits_.max_drawn_modules) +
+                 " modules, the most a drawing may have within the memory limit",
+             "--max-memory SIZE raises it");
 }
 
 void RunBudget::check_memory(std::size_t more) const {

@@ -23,14 +23,19 @@ struct RunLimits {
   std::size_t max_modules = 0;  // in one string; 0: no limit
   std::size_t max_memory = 0;   // bytes of all strings together; 0: no limit
   double timeout_seconds = 0;   // the run: derivation, interpretation, outputs; 0: no limit
+  // In a string about to be drawn (the turtle's geometry, images, meshes);
+  // 0: no limit.
+  std::size_t max_drawn_modules = 0;
 };
 
 // Defaults that keep a run from taking the machine down: half the physical
-// memory for strings, and a module for every 64 bytes of it, as the turtle's
-// geometry and the step's second string need many times a module's bytes. No
-// time limit.
+// memory for strings, and for a string that is drawn a module for every 64
+// bytes of it, as the turtle's geometry needs many times a module's bytes.
+// A string that is only derived and written is bounded by its memory alone
+// (a cpfg symbol or an lpfg module without parameters is one byte). No time
+// limit.
 RunLimits default_run_limits();
-// The module limit a memory limit implies (0 for none).
+// The drawing's module limit a memory limit implies (0 for none).
 std::size_t max_modules_for_memory(std::size_t max_memory);
 
 // A limit crossed: the message names the step, the amount and the limit.
@@ -65,6 +70,8 @@ class RunBudget {
   // Throws LimitExceeded when the encoded string `data` of `bytes` bytes
   // holds more modules than allowed. Counts only a string long enough to.
   void check_modules(const unsigned char* data, std::size_t bytes) const;
+  // The same for a string about to be drawn, against max_drawn_modules.
+  void check_drawn_modules(const unsigned char* data, std::size_t bytes) const;
   // Throws LimitExceeded when the strings would take more than allowed
   // with `more` bytes allocated on top of what they take now.
   void check_memory(std::size_t more) const;
@@ -88,6 +95,7 @@ class RunBudget {
 
  private:
   [[noreturn]] void exceeded(const std::string& what, const std::string& option) const;
+  bool more_modules_than(std::size_t max, const unsigned char* data, std::size_t bytes) const;
   RunLimits limits_;
   std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
   const std::uint32_t* sizes_ = nullptr;

@@ -51,7 +51,8 @@ TEST(RunLimits, ByteSizes) {
 TEST(RunLimits, DefaultsProtectTheMachine) {
   const RunLimits limits = default_run_limits();
   EXPECT_GT(limits.max_memory, 0u);
-  EXPECT_EQ(limits.max_modules, limits.max_memory / 64);
+  EXPECT_EQ(limits.max_modules, 0u);  // a string only derived is bounded by its memory
+  EXPECT_EQ(limits.max_drawn_modules, limits.max_memory / 64);
   EXPECT_EQ(max_modules_for_memory(std::size_t{1} << 30), std::size_t{1} << 24);
   EXPECT_EQ(max_modules_for_memory(0), 0u);
   EXPECT_EQ(limits.timeout_seconds, 0);
@@ -102,12 +103,34 @@ TEST(RunLimits, MemoryStopsTheStepBeforeItAllocatesPastTheLimit) {
   const std::size_t limit = std::size_t{64} << 20;
   auto s = open(path, RunLimits{0, limit, 0});
   const std::string message = limit_message(*s);
-  // A module A takes 2 bytes: 2^25 of them fill 64 MiB, with the step's old
+  // A module A takes 1 byte: 2^26 of them fill 64 MiB, with the step's old
   // string beside the new one a step or two sooner.
   EXPECT_NE(message.find("sylva: error: step 2"), std::string::npos) << message;
   EXPECT_NE(message.find("more than the limit of 64.0 MiB (--max-memory SIZE raises it)"), std::string::npos)
       << message;
   EXPECT_LE(string_bytes_in_use(), limit);
+}
+
+// 2^11 = 2048 modules derive past a drawing limit of 1000, and stop when
+// drawn; 2^9 = 512 draw.
+TEST(RunLimits, ADrawingHoldsNoMoreModulesThanItsLimit) {
+  const std::string path = write_temp_file("limits-drawn", "runaway.l", kRunaway);
+  RunLimits limits;
+  limits.max_drawn_modules = 1000;
+  auto s = open(path, limits);
+  s->run(11);
+  EXPECT_EQ(s->string().count_modules(s->types()), 2048u);
+  std::string message = "no limit reached";
+  try {
+    s->scene(0);
+  } catch (const LimitExceeded& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message,
+            "sylva: error: drawing after step 11: the string has more than 1000 modules, the most a drawing may have "
+            "within the memory limit (--max-memory SIZE raises it)");
+  s->run(9);
+  EXPECT_NO_THROW(s->scene(0));
 }
 
 TEST(RunLimits, TimeStopsTheRunBetweenSteps) {
