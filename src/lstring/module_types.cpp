@@ -9,8 +9,9 @@ namespace sylva {
 
 ModuleTypes::ModuleTypes(std::vector<Type> types) : types_(std::move(types)) {
   for (std::size_t k = 0; k < types_.size(); ++k) {
-    encoded_sizes_.push_back(static_cast<std::uint32_t>(abi::encoded_module_size(static_cast<ModuleId>(k), types_[k].param_size)));
-    by_name_.emplace(types_[k].name, static_cast<ModuleId>(k));
+    const auto id = static_cast<ModuleId>(k);
+    encoded_sizes_.push_back(static_cast<std::uint32_t>(abi::encoded_module_size(id, types_[k].param_size)));
+    by_name_.emplace(types_[k].name, id);
   }
   classify_params_text();
 }

@@ -25,7 +25,7 @@ using ModuleId = std::uint16_t;
 // read with memcpy.
 //
 // An id below kWideId (nearly every model's every id: the predefined modules
-// and the first 150 of the model's own) is one byte, so a parameterless
+// and about the first 150 of the model's own) is one byte, so a parameterless
 // module takes one byte, as a symbol does in cpfg. A wider id is kWideId and
 // the id's two bytes at the start, the two bytes and kWideId at the end; a
 // parameterless module with a wide id is [kWideId][id][kWideId]. The byte at
@@ -42,7 +42,9 @@ inline constexpr std::size_t encoded_module_size(ModuleId id, std::size_t param_
 }
 
 // The most bytes a module with `param_size` bytes of parameters can take.
-inline constexpr std::size_t largest_module_size(std::size_t param_size) { return encoded_module_size(kWideId, param_size); }
+inline constexpr std::size_t largest_module_size(std::size_t param_size) {
+  return encoded_module_size(kWideId, param_size);
+}
 
 // The id of the module starting at `at`, and of the one ending at `end`.
 inline ModuleId leading_id(const unsigned char* at) {
