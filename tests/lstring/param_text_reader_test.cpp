@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lstring/param_text.h"
+#include "lstring/param_type_constants.h"
 #include "sylva/runtime/modules.h"
 
 namespace sylva::test {
@@ -21,13 +22,7 @@ using abi::ParamField;
 using abi::ParamKind;
 using abi::ParamType;
 
-const ParamType kFloat{ParamKind::kFloat, 4};
-const ParamType kDouble{ParamKind::kDouble, 8};
-const ParamType kInt{ParamKind::kSigned, 4};
 const ParamType kShort{ParamKind::kSigned, 2};
-const ParamType kByte{ParamKind::kUnsigned, 1};
-const ParamType kBool{ParamKind::kBool, 1};
-const ParamType kText{ParamKind::kText, sizeof(const char*)};
 const ParamType kVector3{ParamKind::kVector, 12, &kFloat, 3};
 const ParamType kEnum{ParamKind::kEnum, 4, &kInt};
 
@@ -108,36 +103,31 @@ TEST(ParamTextReader, FieldsByNameInAnyOrderAndSpaces) {
   EXPECT_EQ(second, 2.0f);
 }
 
-// Offsets counted by hand in each text.
+// Where each text fails and why; offsets counted by hand.
 TEST(ParamTextReader, AStructGivesEachFieldOnce) {
-  const std::vector<ParamField> cell = packed({&kCell});
-  Reading r = read(cell, "{a=1,a=2}");
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.at, 5u);
-  EXPECT_EQ(r.expected, "field 'a' only once");
-  r = read(cell, "{a=1}");
-  EXPECT_EQ(r.at, 4u);
-  EXPECT_EQ(r.expected, "field 'n' (a saved struct gives all its fields)");
-  r = read(cell, "{}");
-  EXPECT_EQ(r.at, 1u);
-  EXPECT_EQ(r.expected, "field 'a' (a saved struct gives all its fields)");
-  r = read(cell, "{a=1,b=2}");
-  EXPECT_EQ(r.at, 5u);
-  EXPECT_EQ(r.expected, "a field of Cell");
-  r = read(packed({&kPod}), "{at=(0,0,0),id=[1,2],cell={a=1,m=2}}");
-  EXPECT_EQ(r.at, 31u);
-  EXPECT_EQ(r.expected, "a field of Cell");
-  r = read(cell, "{a 1}");
-  EXPECT_EQ(r.at, 3u);
-  EXPECT_EQ(r.expected, "'=' after the field name");
-  r = read(cell, "{=1}");
-  EXPECT_EQ(r.at, 1u);
-  EXPECT_EQ(r.expected, "a field name");
-  r = read(cell, "(a=1)");
-  EXPECT_EQ(r.expected, "'{' to begin a struct");
-  r = read(cell, "{a=1,n=2");
-  EXPECT_EQ(r.at, 8u);
-  EXPECT_EQ(r.expected, "'}' to end the struct");
+  struct Case {
+    const ParamType* type;
+    std::string text;
+    std::size_t at;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {&kCell, "{a=1,a=2}", 5, "field 'a' only once"},
+      {&kCell, "{a=1}", 4, "field 'n' (a saved struct gives all its fields)"},
+      {&kCell, "{}", 1, "field 'a' (a saved struct gives all its fields)"},
+      {&kCell, "{a=1,b=2}", 5, "a field of Cell"},
+      {&kPod, "{at=(0,0,0),id=[1,2],cell={a=1,m=2}}", 31, "a field of Cell"},
+      {&kCell, "{a 1}", 3, "'=' after the field name"},
+      {&kCell, "{=1}", 1, "a field name"},
+      {&kCell, "(a=1)", 0, "'{' to begin a struct"},
+      {&kCell, "{a=1,n=2", 8, "'}' to end the struct"},
+  };
+  for (const Case& c : cases) {
+    const Reading r = read(packed({c.type}), c.text);
+    EXPECT_FALSE(r.ok) << c.text;
+    EXPECT_EQ(r.at, c.at) << c.text;
+    EXPECT_EQ(r.expected, c.expected) << c.text;
+  }
 }
 
 TEST(ParamTextReader, TextAndUnknownLayouts) {

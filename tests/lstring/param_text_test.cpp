@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lstring/param_text.h"
+#include "lstring/param_type_constants.h"
 
 namespace sylva::test {
 namespace {
@@ -22,12 +23,6 @@ using abi::ParamField;
 using abi::ParamKind;
 using abi::ParamType;
 
-const ParamType kFloat{ParamKind::kFloat, 4};
-const ParamType kDouble{ParamKind::kDouble, 8};
-const ParamType kInt{ParamKind::kSigned, 4};
-const ParamType kByte{ParamKind::kUnsigned, 1};
-const ParamType kBool{ParamKind::kBool, 1};
-const ParamType kText{ParamKind::kText, sizeof(const char*)};
 
 // A block of parameters packed in order, with the fields that describe it.
 struct Block {
