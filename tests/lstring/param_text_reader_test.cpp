@@ -162,7 +162,9 @@ TEST(ParamTextReader, AgreesWithTheCompiledReader) {
     EXPECT_EQ(table.ok, compiled_ok) << text;
     EXPECT_EQ(table.at, static_cast<std::size_t>(in.at - text.c_str())) << text;
     EXPECT_EQ(table.expected, in.expected ? in.expected : "") << text;
-    if (compiled_ok) EXPECT_EQ(table.block, compiled_block) << text;
+    if (compiled_ok) {
+      EXPECT_EQ(table.block, compiled_block) << text;
+    }
   }
 }
 
