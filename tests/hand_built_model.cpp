@@ -30,14 +30,7 @@ void write_modules(abi::ModuleBuffer* out, std::initializer_list<Written> module
     const std::size_t param_size = m.params.size() * sizeof(float);
     out->reserve_more(abi::encoded_module_size(m.id, param_size));
     unsigned char* at = out->data + out->size;
-    if (!param_size) {
-      abi::put_parameterless(at, m.id);
-    } else {
-      abi::put_leading_id(at, m.id);
-      std::memcpy(at, m.params.data(), param_size);
-      at += param_size;
-      abi::put_trailing_id(at, m.id);
-    }
+    abi::put_encoded_module(at, m.id, m.params.data(), param_size);
     out->size = static_cast<std::size_t>(at - out->data);
   }
 }

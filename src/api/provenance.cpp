@@ -265,6 +265,8 @@ std::string compiler_version(const std::string& compiler) {
   return line;
 }
 
+const char* sylva_version() { return SYLVA_VERSION; }
+
 RunRecord make_run_record(const Simulation& simulation, const SimulationOptions& options) {
   RunRecord r = make_lazy_run_record(simulation, options);
   r.compiler_version = compiler_version(r.compiler);
@@ -273,7 +275,7 @@ RunRecord make_run_record(const Simulation& simulation, const SimulationOptions&
 
 RunRecord make_lazy_run_record(const Simulation& simulation, const SimulationOptions& options) {
   RunRecord r;
-  r.sylva_version = SYLVA_VERSION;
+  r.sylva_version = sylva_version();
   r.model = hashed_file(simulation.model_path());
   for (const io::InputFile& input : options.input_files) {
     HashedFile f = hashed_file(input.path);

@@ -127,6 +127,8 @@ RunRecord make_lazy_run_record(const Simulation& simulation, const SimulationOpt
 // The first line of `compiler --version` ("" when it cannot be run), run
 // once per compiler per process.
 std::string compiler_version(const std::string& compiler);
+// This program's version, as records give it.
+const char* sylva_version();
 // `base` filled with where `simulation` is now: its step (its time when
 // base.continuous is set), whether it finished, the string's SHA-256, and
 // the compiler's version if it has none.

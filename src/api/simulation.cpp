@@ -222,9 +222,11 @@ void Simulation::check_string_limits() {
 }
 
 RunBudget::Scope Simulation::drawing() {
+  // Inside another drawing (write's scenes) the string was counted already.
+  const bool nested = RunBudget::active() == &budget_;
   budget_.set_step(step_number(), true);
   budget_.check_time();
-  budget_.check_drawn_modules(derivation_->string().data(), derivation_->string().size_bytes());
+  if (!nested) budget_.check_drawn_modules(derivation_->string().data(), derivation_->string().size_bytes());
   return RunBudget::Scope(budget_);
 }
 

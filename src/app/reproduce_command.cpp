@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "io/string_reader.h"
+#include "support/default_compiler.h"
 #include "support/diagnostic.h"
 
 namespace sylva::app {
@@ -59,13 +60,15 @@ int run_reproduce(const std::string& file, const build::BuildOptions& build) {
   options.cpfg_window_seeding = record.cpfg_window_seeding;
 
   Simulation simulation(record.model.path, options);
-  const RunRecord now = make_run_record(simulation, options);
-  if (!record.compiler_version.empty() && now.compiler_version != record.compiler_version)
+  // The files were hashed above: only the versions are compared here.
+  const std::string compiler = compiler_version(options.build.compiler.empty() ? default_compiler()
+                                                                                : options.build.compiler);
+  if (!record.compiler_version.empty() && compiler != record.compiler_version)
     std::fprintf(stderr, "sylva: note: the model was compiled by %s, now by %s\n", record.compiler_version.c_str(),
-                 now.compiler_version.c_str());
-  if (!record.sylva_version.empty() && now.sylva_version != record.sylva_version)
+                 compiler.c_str());
+  if (!record.sylva_version.empty() && record.sylva_version != sylva_version())
     std::fprintf(stderr, "sylva: note: %s was written by Sylva %s, this is Sylva %s\n", file.c_str(),
-                 record.sylva_version.c_str(), now.sylva_version.c_str());
+                 record.sylva_version.c_str(), sylva_version());
   if (record.axiom_from) simulation.start_from(io::read_string_file(record.axiom_from->path, simulation.types()));
 
   if (record.continuous) {
@@ -81,12 +84,12 @@ int run_reproduce(const std::string& file, const build::BuildOptions& build) {
   }
   if (record.finished) simulation.finish();
 
-  const std::string hash = string_sha256(simulation);
   if (!record.continuous && simulation.step_number() != record.step) {
     std::fprintf(stderr, "sylva: error: %s: the run stopped after %d steps, the record shows step %d\n",
                  file.c_str(), simulation.step_number(), record.step);
     return kNotReproduced;
   }
+  const std::string hash = string_sha256(simulation);
   if (hash != record.string_sha256) {
     std::fprintf(stderr,
                  "sylva: error: %s: not reproduced: the string's sha256 is %s, the record says %s (step %d)\n",

@@ -17,6 +17,7 @@
 #include "experiment/local_processes.h"
 #include "experiment/measures.h"
 #include "experiment/progress.h"
+#include "experiment/run_one.h"
 #include "experiment/table.h"
 #include "io/output_file.h"
 
@@ -109,11 +110,6 @@ std::string table_record(const Plan& plan, const RunRecord& model) {
   record["plan"] = {{"path", fs::absolute(plan.path).string()}, {"sha256", file_sha256(plan.path).value_or("")}};
   record["table"] = fs::path(plan.output).filename().string();
   return record.dump(2) + "\n";
-}
-
-SimulationOptions with_defines(SimulationOptions options, const RunSpec& run) {
-  for (const std::string& d : run.defines()) options.build.defines.push_back(d);
-  return options;
 }
 
 }  // namespace

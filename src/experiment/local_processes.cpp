@@ -27,11 +27,10 @@ void write_all(int fd, const std::string& text) {
   }
 }
 
-RunResult failed(long number, const std::string& why, double seconds) {
+RunResult failed(long number, const std::string& why) {
   RunResult result;
   result.number = number;
   result.error = why;
-  result.seconds = seconds;
   return result;
 }
 
@@ -60,7 +59,7 @@ void LocalProcesses::start(const RunSpec& run) {
     try {
       text = run_(run);
     } catch (const std::exception& error) {
-      text = encode_result(failed(run.number, error.what(), 0));
+      text = encode_result(failed(run.number, error.what()));
     }
     write_all(fds[1], text);
     ::close(fds[1]);
@@ -75,19 +74,15 @@ RunResult LocalProcesses::ended(int fd, Child& child) {
   while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
   }
   ::close(fd);
-  const double seconds = now_seconds() - child.started;
   if (WIFSIGNALED(status))
-    return failed(child.number,
-                  "the run's process was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
-                      strsignal(WTERMSIG(status)) + ")",
-                  seconds);
+    return failed(child.number, "the run's process was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+                                    strsignal(WTERMSIG(status)) + ")");
   if (child.output.empty())
-    return failed(child.number, "the run's process ended (status " + std::to_string(WEXITSTATUS(status)) + ") with no result",
-                  seconds);
+    return failed(child.number, "the run's process ended (status " + std::to_string(WEXITSTATUS(status)) + ") with no result");
   try {
     return decode_result(child.output);
   } catch (const std::exception& error) {
-    return failed(child.number, std::string("the run's result could not be read: ") + error.what(), seconds);
+    return failed(child.number, std::string("the run's result could not be read: ") + error.what());
   }
 }
 
@@ -123,7 +118,7 @@ std::vector<RunResult> LocalProcesses::collect(int timeout_ms) {
       ::close(it->first);
       char text[64];
       std::snprintf(text, sizeof text, "the run took longer than %g s and was stopped", timeout_seconds_);
-      results.push_back(failed(it->second.number, text, now - it->second.started));
+      results.push_back(failed(it->second.number, text));
       it = children_.erase(it);
     }
   }

@@ -304,6 +304,8 @@ Measures::Measures(const std::vector<MeasureSpec>& specs, const ModuleTypes& typ
     expressions_.push_back(Parser(spec, earlier, types, wanted_, needs_scene_).parse());
     earlier.push_back(spec);
   }
+  feeds_.resize(types.size());
+  for (std::size_t w = 0; w < wanted_.size(); ++w) feeds_[wanted_[w].first].push_back(static_cast<int>(w));
 }
 
 Measures::~Measures() = default;
@@ -315,17 +317,14 @@ std::vector<double> Measures::evaluate(const ModuleString& string, const ModuleT
                                        const geometry::Scene* scene) const {
   Summary summary;
   summary.stats.resize(wanted_.size());
-  // Which wanted entries each module id feeds, found once.
-  std::vector<std::vector<int>> feeds(types.size());
-  for (std::size_t w = 0; w < wanted_.size(); ++w) feeds[wanted_[w].first].push_back(static_cast<int>(w));
   const StringView view = string.view(types);
   for (std::size_t at = view.begin; at < view.end; at = view.next(at)) {
     ++summary.modules;
     const ModuleId id = view.id_at(at);
-    if (feeds[id].empty()) continue;
+    if (feeds_[id].empty()) continue;
     std::vector<double> numbers;
     bool read = false;
-    for (int w : feeds[id]) {
+    for (int w : feeds_[id]) {
       Stat& stat = summary.stats[w];
       ++stat.count;
       const int parameter = wanted_[w].second;

@@ -44,6 +44,7 @@ class Measures {
  private:
   std::vector<std::unique_ptr<Expression>> expressions_;
   std::vector<std::pair<ModuleId, int>> wanted_;  // (module, parameter number; 0: the count)
+  std::vector<std::vector<int>> feeds_;            // by module id: the wanted_ entries it feeds
   bool needs_scene_ = false;
 };
 

@@ -34,14 +34,12 @@ struct SavePlan {
   std::vector<long> runs;             // run numbers, when not all
   std::vector<std::string> formats;   // extensions: str, png, obj, ply, glb, svg, pdf, ps, eps
   std::string directory;              // absolute
-  SourceLocation at;
 };
 
 // A measure drawn against a parameter, one dot per run and time.
 struct PlotPlan {
   std::string x, y;   // a parameter's name; a measure's name
   std::string file;   // absolute
-  SourceLocation at;
 };
 
 struct Plan {

@@ -163,7 +163,6 @@ std::vector<std::string> parameter_values(const Reader& r, const toml::node& nod
 void read_save(const Reader& r, const toml::table& t, Plan& plan, const toml::node& node) {
   r.only_keys(t, {"runs", "formats", "directory"}, " in [save]");
   SavePlan save;
-  save.at = r.at(node);
   if (const toml::node* runs = t.get("runs")) {
     if (runs->is_string() && runs->as_string()->get() == "all") {
       save.all_runs = true;
@@ -185,7 +184,6 @@ void read_save(const Reader& r, const toml::table& t, Plan& plan, const toml::no
 void read_plot(const Reader& r, const toml::table& t, Plan& plan, const toml::node& node) {
   r.only_keys(t, {"x", "y", "file"}, " in [plot]");
   PlotPlan plot;
-  plot.at = r.at(node);
   for (const char* key : {"x", "y", "file"})
     if (!t.contains(key)) r.fail(node, std::string("[plot] needs '") + key + "'");
   plot.x = r.string(*t.get("x"), "x");

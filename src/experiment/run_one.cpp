@@ -1,6 +1,5 @@
 #include "experiment/run_one.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -53,13 +52,16 @@ RunRow measure(const Measures& measures, Simulation& simulation) {
 
 }  // namespace
 
+SimulationOptions with_defines(SimulationOptions options, const RunSpec& run) {
+  for (const std::string& define : run.defines()) options.build.defines.push_back(define);
+  return options;
+}
+
 RunResult execute_run(const Plan& plan, const RunSpec& run, const SimulationOptions& base) {
-  const auto started = std::chrono::steady_clock::now();
   RunResult result;
   result.number = run.number;
   try {
-    SimulationOptions options = base;
-    for (const std::string& define : run.defines()) options.build.defines.push_back(define);
+    SimulationOptions options = with_defines(base, run);
     options.seed = run.seed;
     Simulation simulation(plan.model, options, [](const std::string&) {});
     // Saved outputs record the run (api/provenance.h): `sylva run --reproduce` re-runs one alone.
@@ -98,7 +100,6 @@ RunResult execute_run(const Plan& plan, const RunSpec& run, const SimulationOpti
   } catch (const std::exception& error) {
     result.error = error.what();
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
 
@@ -114,9 +115,7 @@ std::string encode_result(const RunResult& result) {
     }
     rows.push_back({{"step", row.step}, {"time", row.time}, {"values", values}, {"note", row.note}});
   }
-  return nlohmann::json{{"number", result.number}, {"ok", result.ok},     {"error", result.error},
-                        {"rows", rows},            {"seconds", result.seconds}}
-      .dump();
+  return nlohmann::json{{"number", result.number}, {"ok", result.ok}, {"error", result.error}, {"rows", rows}}.dump();
 }
 
 RunResult decode_result(const std::string& text) {
@@ -125,7 +124,6 @@ RunResult decode_result(const std::string& text) {
   result.number = j.at("number").get<long>();
   result.ok = j.at("ok").get<bool>();
   result.error = j.at("error").get<std::string>();
-  result.seconds = j.at("seconds").get<double>();
   for (const nlohmann::json& r : j.at("rows")) {
     RunRow row;
     row.step = r.at("step").get<int>();

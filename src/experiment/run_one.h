@@ -26,13 +26,15 @@ struct RunResult {
   bool ok = false;
   std::string error;  // when !ok: what stopped the run (a model error, a crash, a timeout)
   std::vector<RunRow> rows;
-  double seconds = 0;
 };
 
 // Runs `run` of `plan` in this process, from `base` (run_options() of the
 // plan, experiment/experiment.h) with the run's -D values and seed. Errors of
 // the model become the result's error; the rows measured before them are kept.
 RunResult execute_run(const Plan& plan, const RunSpec& run, const SimulationOptions& base);
+
+// `options` with the run's -D values added.
+SimulationOptions with_defines(SimulationOptions options, const RunSpec& run);
 
 // The text that carries a result between processes (one line of JSON), and back.
 std::string encode_result(const RunResult& result);

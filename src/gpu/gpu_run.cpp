@@ -12,14 +12,12 @@ namespace sylva::gpu {
 // successors of different lengths placed by a scan-add.
 namespace {
 
-bool run_translated_on_gpu(const std::string& model, const SimulationOptions& options, int steps,
+bool run_translated_on_gpu(const std::string& model, const SimulationOptions& options, int length,
                            const std::string& string_path, const std::string& probe_reason) {
   LsystemTranslation translation;
-  int length = steps;
   try {
     Simulation simulation(model, options);
     translation = translate_lsystem(simulation, options.build);
-    if (length < 0) length = simulation.derivation_length();
   } catch (const std::exception& error) {
     translation.in_class = false;
     translation.reason = error.what();
@@ -57,7 +55,7 @@ bool run_on_gpu(const std::string& model, const SimulationOptions& options, int 
     probe = probe_stencil(simulation);
     if (length < 0) length = simulation.derivation_length();
   }
-  if (!probe.in_class) return run_translated_on_gpu(model, options, steps, string_path, probe.reason);
+  if (!probe.in_class) return run_translated_on_gpu(model, options, length, string_path, probe.reason);
   std::vector<double> points;
   try {
     points = gl_stencil_deriver().derive(probe.axiom.points, probe.axiom.dim, probe.stencil, length);

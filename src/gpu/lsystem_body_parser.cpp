@@ -218,10 +218,10 @@ int BodyParser::produce_index(int cut) {
   if (produced_index_[cut] < 0) {
     std::vector<Produced> modules;
     // Parse the modules' arguments in the current scope.
-    const auto saved_toks = std::move(toks_);
+    auto saved_toks = std::move(toks_);
     const std::size_t saved_at = at_;
     for (const lang::ModuleCall& call : produce_calls_[cut]) modules.push_back(produced_(call, *this));
-    toks_ = saved_toks;
+    toks_ = std::move(saved_toks);
     at_ = saved_at;
     p_.produces.push_back(std::move(modules));
     produced_index_[cut] = static_cast<int>(p_.produces.size()) - 1;

@@ -116,11 +116,7 @@ class BodyParser {
   // ---- expressions (lsystem_expression_parser.cpp)
   Expr ternary();
   Expr logical_or();
-  Expr logical_and();
-  Expr equality();
-  Expr relational();
-  Expr additive();
-  Expr multiplicative();
+  Expr binary_level(std::size_t level);
   Expr unary();
   Expr postfix(Expr e);
   int field_index(const Token& member, Type t) const;

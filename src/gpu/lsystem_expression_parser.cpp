@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "gpu/lsystem_body_parser.h"
 
@@ -83,71 +84,50 @@ Expr BodyParser::ternary() {
   return t;
 }
 
-Expr BodyParser::logical_or() {
-  Expr l = logical_and();
-  while (is_punct("||")) {
-    const Token& op = next();
-    l = binary('|', std::move(l), logical_and(), op);
-  }
-  return l;
-}
+namespace {
 
-Expr BodyParser::logical_and() {
-  Expr l = equality();
-  while (is_punct("&&")) {
-    const Token& op = next();
-    l = binary('&', std::move(l), equality(), op);
-  }
-  return l;
-}
+// C's binary operators, loosest first, each with the code binary() takes.
+struct BinaryOperator {
+  const char* text;
+  char code;
+};
+const std::vector<std::vector<BinaryOperator>> kBinaryLevels = {
+    {{"||", '|'}},
+    {{"&&", '&'}},
+    {{"==", 'e'}, {"!=", 'n'}},
+    {{"<", '<'}, {">", '>'}, {"<=", 'l'}, {">=", 'g'}},
+    {{"+", '+'}, {"-", '-'}},
+    {{"*", '*'}, {"/", '/'}, {"%", '%'}},
+};
 
-Expr BodyParser::equality() {
-  Expr l = relational();
-  while (is_punct("==") || is_punct("!=")) {
-    const Token& op = next();
-    l = binary(op.text == "==" ? 'e' : 'n', std::move(l), relational(), op);
-  }
-  return l;
-}
+}  // namespace
 
-Expr BodyParser::relational() {
-  Expr l = additive();
-  while (is_punct("<") || is_punct(">") || is_punct("<=") || is_punct(">=")) {
-    const Token& op = next();
-    const char c = op.text == "<" ? '<' : op.text == ">" ? '>' : op.text == "<=" ? 'l' : 'g';
-    l = binary(c, std::move(l), additive(), op);
-  }
-  return l;
-}
+Expr BodyParser::logical_or() { return binary_level(0); }
 
-Expr BodyParser::additive() {
-  Expr l = multiplicative();
-  while (is_punct("+") || is_punct("-")) {
+// Operands of the next tighter level joined, left to right, by this level's
+// operators.
+Expr BodyParser::binary_level(std::size_t level) {
+  if (level == kBinaryLevels.size()) return unary();
+  Expr l = binary_level(level + 1);
+  while (true) {
+    const BinaryOperator* found = nullptr;
+    for (const BinaryOperator& op : kBinaryLevels[level])
+      if (is_punct(op.text)) found = &op;
+    if (!found) return l;
     const Token& op = next();
-    l = binary(op.text[0], std::move(l), multiplicative(), op);
+    l = binary(found->code, std::move(l), binary_level(level + 1), op);
   }
-  return l;
-}
-
-Expr BodyParser::multiplicative() {
-  Expr l = unary();
-  while (is_punct("*") || is_punct("/") || is_punct("%")) {
-    const Token& op = next();
-    l = binary(op.text[0], std::move(l), unary(), op);
-  }
-  return l;
 }
 
 Expr BodyParser::unary() {
   if (is_punct("-")) {
-    const Token& op = next();
+    next();
     Expr e = unary();
     if (e.type == Type::kBool) e = convert(std::move(e), Type::kInt);
     if (e.op == Expr::kLiteral && is_scalar(e.type)) {
       e.literal.c[0] = -e.literal.c[0];
       return e;
     }
-    (void)op;
     Expr n;
     n.op = Expr::kNeg;
     n.type = e.type;

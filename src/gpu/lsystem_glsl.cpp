@@ -251,7 +251,7 @@ class Translator {
       for (std::size_t k = 0; k < call.args.size(); ++k) {
         std::vector<Tok> arg;
         for (const Token& t : call.args[k]) arg.push_back(Tok{&t});
-        parser.reset(arg);
+        parser.reset(std::move(arg));
         Expr e = parser.whole_expression();
         m.args.push_back(parser.assign_convert(std::move(e), type.params[k], call.args[k].front()));
       }

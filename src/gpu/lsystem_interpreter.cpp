@@ -14,7 +14,7 @@ namespace {
 
 class Interpreter {
  public:
-  explicit Interpreter(const Production& p) : p_(p), slots_(p.slot_types.size()) {}
+  explicit Interpreter(const Production& p) : slots_(p.slot_types.size()) {}
 
   Value eval(const Expr& e) {
     Value r;
@@ -162,7 +162,6 @@ class Interpreter {
   static double wrap_int(double v) {
     return static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<long long>(v))));
   }
-  const Production& p_;
   std::vector<Value> slots_;
 };
 
@@ -178,6 +177,7 @@ GpuString CpuLsystemDeriver::derive(const LsystemProgram& program, const GpuStri
   GpuString from = string, to;
   std::vector<Interpreter> interpreters;
   for (const Production& p : code.productions) interpreters.emplace_back(p);
+  std::vector<long> where;  // the matched modules' places, reused from module to module
   for (int step = 0; step < steps; ++step) {
     const long n = static_cast<long>(from.size());
     to.types.clear();
@@ -200,7 +200,7 @@ GpuString CpuLsystemDeriver::derive(const LsystemProgram& program, const GpuStri
           Interpreter& run = interpreters[static_cast<std::size_t>(pi)];
           const long l = static_cast<long>(p.left.size());
           bool match = true;
-          std::vector<long> where;
+          where.clear();
           for (long k = 0; k < l && match; ++k) {
             long j = 0;
             match = at(i - l + k, j) && from.types[static_cast<std::size_t>(j)] == p.left[static_cast<std::size_t>(k)];

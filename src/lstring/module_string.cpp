@@ -209,14 +209,7 @@ void ModuleString::set_written_size(std::size_t size) {
 void ModuleString::append_module(ModuleId id, const void* params, std::size_t param_size) {
   buffer_.reserve_more(abi::encoded_module_size(id, param_size));
   unsigned char* at = buffer_.data + buffer_.size;
-  if (!param_size) {
-    abi::put_parameterless(at, id);
-  } else {
-    abi::put_leading_id(at, id);
-    std::memcpy(at, params, param_size);
-    at += param_size;
-    abi::put_trailing_id(at, id);
-  }
+  abi::put_encoded_module(at, id, params, param_size);
   buffer_.size = static_cast<std::size_t>(at - buffer_.data);
 }
 

@@ -26,7 +26,7 @@ inline const unsigned char* module_params(const unsigned char* data, std::size_t
   return data + offset + (data[offset] != abi::kWideId ? 1 : 3);
 }
 inline unsigned char* module_params(unsigned char* data, std::size_t offset) {
-  return data + offset + (data[offset] != abi::kWideId ? 1 : 3);
+  return const_cast<unsigned char*>(module_params(static_cast<const unsigned char*>(data), offset));
 }
 
 // Whether string buffers of several megabytes ask for transparent huge pages

@@ -100,7 +100,6 @@ TEST(ResultTable, ResultsTravelAsTextUnchanged) {
   RunResult r;
   r.number = 7;
   r.ok = true;
-  r.seconds = 0.25;
   r.rows = {{3, 1.5, {0.1, 1.0 / 3, std::nan(""), HUGE_VAL, -HUGE_VAL}, ""}};
   const RunResult back = decode_result(encode_result(r));
   EXPECT_EQ(back.number, 7);

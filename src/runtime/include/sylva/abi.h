@@ -84,6 +84,15 @@ inline void put_parameterless(unsigned char*& at, ModuleId id) {
   put_leading_id(at, id);
   if (id >= kWideId) *at++ = kWideId;
 }
+// A whole module: `param_size` bytes of parameters framed by its id, or its
+// id alone without them.
+inline void put_encoded_module(unsigned char*& at, ModuleId id, const void* params, std::size_t param_size) {
+  if (!param_size) return put_parameterless(at, id);
+  put_leading_id(at, id);
+  std::memcpy(at, params, param_size);
+  at += param_size;
+  put_trailing_id(at, id);
+}
 
 // A growable byte buffer of encoded modules. The engine allocates it and
 // supplies `grow`, so a model never calls an allocator of its own.
