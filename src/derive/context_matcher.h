@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "lstring/module_string.h"
+#include "sylva/predefined_ids.h"
 
 namespace sylva::derive {
 
@@ -35,6 +36,50 @@ bool match_right_context(const StringView& s, ContextCursor& from, const ModuleI
                          const unsigned char** params);
 bool match_left_context(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n, SkipTable skipped,
                         const unsigned char** params);
+
+// The same, trying first inline what decides most matches in a rewriting
+// pass: the modules right next to the cursor either are the pattern or rule
+// it out. Where one is a bracket or an ignored module, or the string ends,
+// the walks above decide.
+inline bool match_right_context_here(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n,
+                                     SkipTable skipped, const unsigned char** params) {
+  std::size_t at = from.at;
+  for (int k = 0; k < n; ++k) {
+    const ModuleId want = pattern[k];
+    if (at >= s.end || want == rt::mid::SB || want == rt::mid::EB) goto walk;
+    const ModuleId id = s.id_at(at);
+    if (id != want) {
+      if (id == rt::mid::SB || id == rt::mid::EB || (skipped && skipped[id])) goto walk;
+      return false;
+    }
+    params[k] = module_params(s.data, at);
+    at = s.next(at);
+  }
+  from.at = at;
+  return true;
+walk:
+  return match_right_context(s, from, pattern, n, skipped, params);
+}
+
+inline bool match_left_context_here(const StringView& s, ContextCursor& from, const ModuleId* pattern, int n,
+                                    SkipTable skipped, const unsigned char** params) {
+  std::size_t at = from.at;
+  for (int k = n - 1; k >= 0; --k) {
+    if (at <= s.begin) goto walk;
+    const std::size_t start = s.previous(at);
+    const ModuleId id = s.id_at(start);
+    if (id != pattern[k]) {
+      if (id == rt::mid::SB || id == rt::mid::EB || (skipped && skipped[id])) goto walk;
+      return false;
+    }
+    params[k] = module_params(s.data, start);
+    at = start;
+  }
+  from.at = at;
+  return true;
+walk:
+  return match_left_context(s, from, pattern, n, skipped, params);
+}
 
 // Matches `pattern` (n modules, in string order) starting at `pos` and going
 // right. On success params[k] points at the parameters of the module matched

@@ -400,8 +400,8 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   SkipTable skipped = skip_table(rule);
   // Where each context ends: in-body context tests carry on from there.
   ContextCursor left{pos, false}, right{at, false}, new_left{built.size_bytes(), false};
-  if (l && !match_left_context(src, left, rule.pattern + nl, l, skipped, params + nl)) return false;
-  if (r && !match_right_context(src, right, strict + s, r, skipped, params + nl + l + s)) return false;
+  if (l && !match_left_context_here(src, left, rule.pattern + nl, l, skipped, params + nl)) return false;
+  if (r && !match_right_context_here(src, right, strict + s, r, skipped, params + nl + l + s)) return false;
   const BranchPartners* built_branches = nullptr;
   if (&built == new_branches_of_) built_branches = &new_branches_;
   if (nl) {
@@ -423,7 +423,7 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   if (gathering_reactions_) gathering_reactions_->listen(call, pos, at);
   call.rates = rates_.data();
   call.event_probe = probing_events_;
-  keyed_random::at_module(pos);
+  if (keyed_random_) keyed_random::at_module(pos);
   model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   // A derivative rule, or an event rule asked for its condition: it applies
   // where it matches, and produces nothing.
@@ -458,8 +458,8 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
   SkipTable skipped = skip_table(rule);
   // Where each context ends: in-body context tests carry on from there.
   ContextCursor left{at, false}, right{end, false}, new_right{new_string.begin, false};
-  if (l && !match_left_context(src, left, rule.pattern, l, skipped, params)) return false;
-  if (r && !match_right_context(src, right, strict + s, r, skipped, params + l + s)) return false;
+  if (l && !match_left_context_here(src, left, rule.pattern, l, skipped, params)) return false;
+  if (r && !match_right_context_here(src, right, strict + s, r, skipped, params + l + s)) return false;
   if (nr && !match_right_context(new_string, new_right, strict + s + r, nr, skipped, params + l + s + r))
     return false;
   successor_.clear();
@@ -467,7 +467,7 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
   InBodyContext in_body(src, skipped, left, right);
   in_body.set_new_right(new_string, new_right);
   in_body.attach(call);
-  keyed_random::at_module(end);
+  if (keyed_random_) keyed_random::at_module(end);
   model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
   if (!call.produced) return false;
   *consumed = at;

@@ -29,27 +29,28 @@ namespace sylva::derive {
 class InBodyContext {
  public:
   // `string` is the string the predecessor matched in; `left` and `right`
-  // where its context ended on each side.
-  InBodyContext(const StringView& string, SkipTable skipped, ContextCursor left, ContextCursor right)
-      : string_(string), skipped_(skipped), left_(left), right_(right) {}
+  // where its context ended on each side. The tests move the cursors
+  // themselves: a body runs once per rule applied, so this object only
+  // points at what the caller has (all of it outlives the body).
+  InBodyContext(const StringView& string, SkipTable skipped, ContextCursor& left, ContextCursor& right)
+      : string_(&string), skipped_(skipped), left_(&left), right_(&right) {}
 
   // The new string being built to the left (forward derivation): its first
   // `end` bytes, read when a test runs (the body may move the buffer by
   // appending). `from` is where the predecessor's new left context began.
   // `branches`: its brackets' partners, if the pass follows them.
-  void set_new_left(const ModuleString& built, std::size_t end, const std::uint32_t* sizes, ContextCursor from,
+  void set_new_left(const ModuleString& built, std::size_t end, const std::uint32_t* sizes, ContextCursor& from,
                     const BranchPartners* branches) {
     built_ = &built;
     built_end_ = end;
     sizes_ = sizes;
-    new_left_ = from;
+    new_left_ = &from;
     built_branches_ = branches;
   }
   // The new string built to the right (backward derivation).
-  void set_new_right(const StringView& built, ContextCursor from) {
-    new_right_string_ = built;
-    new_right_ = from;
-    has_new_right_ = true;
+  void set_new_right(const StringView& built, ContextCursor& from) {
+    new_right_string_ = &built;
+    new_right_ = &from;
   }
 
   // Lets the body's tests reach this object.
@@ -62,17 +63,17 @@ class InBodyContext {
   static bool answer(void* self, int part, const ModuleId* pattern, int n, const unsigned char** params);
   bool test(int part, const ModuleId* pattern, int n, const unsigned char** params);
 
-  StringView string_;
+  const StringView* string_;
   SkipTable skipped_;
-  ContextCursor left_, right_;
-  const ModuleString* built_ = nullptr;
+  ContextCursor* left_;
+  ContextCursor* right_;
+  const ModuleString* built_ = nullptr;  // null: no new string on the left
   std::size_t built_end_ = 0;
   const std::uint32_t* sizes_ = nullptr;
   const BranchPartners* built_branches_ = nullptr;
-  ContextCursor new_left_;
-  StringView new_right_string_;
-  ContextCursor new_right_;
-  bool has_new_right_ = false;
+  ContextCursor* new_left_ = nullptr;
+  const StringView* new_right_string_ = nullptr;  // null: no new string on the right
+  ContextCursor* new_right_ = nullptr;
 };
 
 }  // namespace sylva::derive

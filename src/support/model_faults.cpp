@@ -79,8 +79,7 @@ const char* describe(const siginfo_t& info) {
 }
 
 void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
-  const CallSite site = current_site;
-  if (!site.what) {
+  if (!current_site || !current_site->what) {
     // Not the model's fault: as if this handler were not there. Returning
     // raises a fault again at once, and abort() raises SIGABRT again.
     const struct sigaction& previous = previous_actions[signal_number];
@@ -90,6 +89,7 @@ void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
     if (info->si_code <= 0) raise(signal_number);  // sent, not raised by a fault: send it again
     return;
   }
+  const CallSite& site = *current_site;
   SignalSafeText text;
   if (site.file) {
     text << site.file;

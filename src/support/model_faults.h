@@ -28,8 +28,10 @@ struct CallSite {
   int step = 0;                // the derivation step (StepNo())
 };
 
-// The calling thread's site; a synchronous signal arrives on the thread that raised it.
-inline thread_local CallSite current_site;
+// The calling thread's site, or null outside model code; a synchronous signal
+// arrives on the thread that raised it. A pointer, so that entering and
+// leaving model code, once per rule applied, is one store each.
+inline thread_local const CallSite* current_site = nullptr;
 
 // Installs the fatal-signal handler (once per process) and an alternate
 // signal stack for the calling thread, so a stack overflow is reported too.
@@ -38,12 +40,12 @@ void install_handler();
 // The ModelError for the exception being handled, thrown by the model at `site`.
 [[noreturn]] void rethrow_as_model_error(const CallSite& site);
 
-// Calls `model_code` as the model's code at `site`.
+// Calls `model_code` as the model's code at `site`, which lives until it returns.
 template <class ModelCode>
 decltype(auto) call_model(const CallSite& site, ModelCode&& model_code) {
   struct Noted {
-    CallSite saved = current_site;
-    explicit Noted(const CallSite& s) { current_site = s; }
+    const CallSite* saved = current_site;
+    explicit Noted(const CallSite& s) { current_site = &s; }
     ~Noted() { current_site = saved; }
   } noted(site);
   try {

@@ -27,9 +27,13 @@
 namespace sylva::test {
 namespace {
 
+using derive::ContextCursor;
 using derive::find_unmatched_end;
 using derive::match_left_context;
+using derive::match_left_context_here;
 using derive::match_right_context;
+using derive::match_right_context_here;
+using derive::SkipTable;
 using derive::skip_branch_backward;
 using derive::skip_branch_forward;
 
@@ -118,9 +122,18 @@ class ContextMatcherTest : public ::testing::Test {
                     const std::vector<std::uint8_t>* skip = nullptr) const {
     ModuleString s = parse(str);
     std::vector<ModuleId> p = pattern(pat);
-    std::vector<const unsigned char*> params(p.size());
-    bool ok = match_right_context(s.view(types_), offset(s, pos), p.data(), static_cast<int>(p.size()),
-                                  skip ? skip->data() : nullptr, params.data());
+    std::vector<const unsigned char*> params(p.size()), quick_params(p.size());
+    const StringView v = s.view(types_);
+    const int n = static_cast<int>(p.size());
+    const SkipTable table = skip ? skip->data() : nullptr;
+    ContextCursor walked{offset(s, pos), false}, quick = walked;
+    const bool ok = match_right_context(v, walked, p.data(), n, table, params.data());
+    // The inline first try decides as the walk does, and leaves the cursor where it does.
+    EXPECT_EQ(match_right_context_here(v, quick, p.data(), n, table, quick_params.data()), ok) << str << " > " << pat;
+    if (ok) {
+      EXPECT_EQ(quick_params, params) << str << " > " << pat;
+      EXPECT_EQ(quick.at, walked.at) << str << " > " << pat;
+    }
     return describe(s, ok, params);
   }
   // Left context `pat` for the strict predecessor starting at module number `pos`.
@@ -128,9 +141,17 @@ class ContextMatcherTest : public ::testing::Test {
                    const std::vector<std::uint8_t>* skip = nullptr) const {
     ModuleString s = parse(str);
     std::vector<ModuleId> p = pattern(pat);
-    std::vector<const unsigned char*> params(p.size());
-    bool ok = match_left_context(s.view(types_), offset(s, pos), p.data(), static_cast<int>(p.size()),
-                                 skip ? skip->data() : nullptr, params.data());
+    std::vector<const unsigned char*> params(p.size()), quick_params(p.size());
+    const StringView v = s.view(types_);
+    const int n = static_cast<int>(p.size());
+    const SkipTable table = skip ? skip->data() : nullptr;
+    ContextCursor walked{offset(s, pos), false}, quick = walked;
+    const bool ok = match_left_context(v, walked, p.data(), n, table, params.data());
+    EXPECT_EQ(match_left_context_here(v, quick, p.data(), n, table, quick_params.data()), ok) << pat << " < " << str;
+    if (ok) {
+      EXPECT_EQ(quick_params, params) << pat << " < " << str;
+      EXPECT_EQ(quick.at, walked.at) << pat << " < " << str;
+    }
     return describe(s, ok, params);
   }
 
@@ -398,6 +419,36 @@ TEST_F(ContextMatcherTest, BranchIndexGivesTheWalksAnswers) {
         }
       }
     }
+}
+
+// The inline first try decides every match as the walk does, on a string
+// whose neighbours are often brackets, ignored modules or its ends.
+TEST_F(ContextMatcherTest, TheInlineFirstTryAgreesWithTheWalk) {
+  const ModuleString s = random_tree(5, 20000);
+  const StringView v = s.view(types_);
+  const auto ignore_b = ignoring("B");
+  int matches = 0;
+  for (const char* text : {"A", "B", "A C", "C D E", "[ A", "A ]", "E A B"})
+    for (const std::uint8_t* table : {static_cast<const std::uint8_t*>(nullptr), ignore_b.data()}) {
+      const std::vector<ModuleId> p = pattern(text);
+      const int n = static_cast<int>(p.size());
+      std::vector<const unsigned char*> walked_params(p.size()), quick_params(p.size());
+      for (std::size_t at = v.begin; at <= v.end; at = at < v.end ? v.next(at) : at + 1) {
+        for (bool right : {true, false}) {
+          ContextCursor walked{at, false}, quick{at, false};
+          const bool ok = right ? match_right_context(v, walked, p.data(), n, table, walked_params.data())
+                                : match_left_context(v, walked, p.data(), n, table, walked_params.data());
+          const bool quick_ok = right ? match_right_context_here(v, quick, p.data(), n, table, quick_params.data())
+                                      : match_left_context_here(v, quick, p.data(), n, table, quick_params.data());
+          ASSERT_EQ(quick_ok, ok) << text << " at " << at;
+          if (!ok) continue;
+          ++matches;
+          ASSERT_EQ(quick_params, walked_params) << text << " at " << at;
+          ASSERT_EQ(quick.at, walked.at) << text << " at " << at;
+        }
+      }
+    }
+  EXPECT_GT(matches, 1000);
 }
 
 // Built in parts (as a parallel pass builds it), the index pairs every

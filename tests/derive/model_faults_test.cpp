@@ -91,13 +91,16 @@ TEST_F(ModelFaults, TheEnginesOwnErrorsPassUnchanged) {
 }
 
 TEST_F(ModelFaults, NoSiteIsNotedOutsideModelCode) {
-  run([] { EXPECT_STREQ(model_faults::current_site.what, "production"); });
-  EXPECT_EQ(model_faults::current_site.what, nullptr);
+  run([] {
+    ASSERT_NE(model_faults::current_site, nullptr);
+    EXPECT_STREQ(model_faults::current_site->what, "production");
+  });
+  EXPECT_EQ(model_faults::current_site, nullptr);
   try {
     run([] { throw 1; });
   } catch (const ModelError&) {
   }
-  EXPECT_EQ(model_faults::current_site.what, nullptr);
+  EXPECT_EQ(model_faults::current_site, nullptr);
 }
 
 // ---- fatal signals (each in a child process: gtest's death tests)
