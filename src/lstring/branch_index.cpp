@@ -7,41 +7,107 @@
 #include "sylva/predefined_ids.h"
 
 namespace sylva {
+namespace {
+
+constexpr ModuleId kSB = rt::mid::SB;
+constexpr ModuleId kEB = rt::mid::EB;
+
+}  // namespace
 
 void BranchIndex::prepare(const StringView& string) {
   string_ = string;
   built_.store(false, std::memory_order_relaxed);
 }
 
-// One pass with a stack of open SBs, partners filled by rank as it goes.
-// build_in_parts' way on one part (pairs kept, then ranked) made bush-context
-// on one thread about a fifth slower: the pairs are fresh memory each step.
 void BranchIndex::build() const {
   std::lock_guard<std::mutex> lock(building_);
   if (built_.load(std::memory_order_relaxed)) return;
-  constexpr ModuleId kSB = rt::mid::SB;
-  constexpr ModuleId kEB = rt::mid::EB;
+  build_from({string_.begin}, [](std::size_t n, const std::function<void(std::size_t)>& task) {
+    for (std::size_t p = 0; p < n; ++p) task(p);
+  });
+}
+
+void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) {
+  build_from(parts, for_each_part);
+}
+
+// Two passes over each part: the first marks where brackets start (a walk
+// over the modules), the second goes through the marks in order, pairing
+// brackets with a stack of the part's open SBs and writing each partner at
+// its rank. What a part leaves open (EBs closing branches opened before it,
+// SBs still open at its end, as many as the branches are deep) is paired
+// across the parts at the end.
+void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) const {
   const StringView& s = string_;
+  const std::size_t n = parts.size();
+  auto part_end = [&](std::size_t p) { return p + 1 < n ? parts[p + 1] : s.end; };
   size_marks();
-  std::fill(marks_.get(), marks_.get() + mark_words_, 0);
-  partners_.clear();
-  std::vector<std::pair<std::size_t, std::size_t>> open;  // rank and offset of each SB not closed yet
-  for (std::size_t at = s.begin; at < s.end; at = s.next(at)) {
-    const ModuleId id = s.id_at(at);
-    if (id != kSB && id != kEB) continue;
-    marks_[at >> 6] |= std::uint64_t{1} << (at & 63);
-    if (id == kSB) {
-      open.emplace_back(partners_.size(), at);
-      partners_.push_back(kUnmatched);
-    } else if (open.empty()) {
-      partners_.push_back(kUnmatched);
-    } else {
-      partners_[open.back().first] = at;
-      partners_.push_back(open.back().second);
+  std::fill(marks_.get(), marks_.get() + (parts[0] >> 6), 0);  // before the string's begin
+  for (std::size_t p = 0; p < n; ++p) marks_[parts[p] >> 6] = 0;  // words parts share
+  marks_[s.end >> 6] = 0;
+  for_each_part(n, [&](std::size_t p) {
+    const std::size_t from = parts[p], to = part_end(p);
+    if ((to >> 6) > (from >> 6) + 1) std::fill(&marks_[(from >> 6) + 1], &marks_[to >> 6], 0);
+    for (std::size_t at = from; at < to; at = s.next(at)) {
+      const ModuleId id = s.id_at(at);
+      if (id != kSB && id != kEB) continue;
+      const std::uint64_t bit = std::uint64_t{1} << (at & 63);
+      std::uint64_t& word = marks_[at >> 6];
+      // Words a neighbouring part may also mark are shared.
+      if ((at >> 6) == (from >> 6) || (at >> 6) == (to >> 6))
+        std::atomic_ref<std::uint64_t>(word).fetch_or(bit, std::memory_order_relaxed);
+      else
+        word |= bit;
+    }
+  });
+  const std::size_t brackets = count_marks();
+  if (brackets > partner_room_) {
+    partners_.reset(new std::size_t[brackets]);
+    partner_room_ = brackets;
+  }
+  struct Bracket {
+    std::size_t rank, offset;
+  };
+  struct Loose {
+    std::vector<Bracket> closing_earlier, open;  // in string order
+  };
+  std::vector<Loose> loose(n);
+  for_each_part(n, [&](std::size_t p) {
+    const std::size_t from = parts[p], to = part_end(p);
+    std::vector<Bracket>& open = loose[p].open;
+    std::size_t r = rank(from);  // the brackets before this part
+    for (std::size_t word = from >> 6; word <= (to - 1) >> 6 && from < to; ++word) {
+      std::uint64_t bits = marks_[word];
+      if (word == from >> 6) bits &= ~std::uint64_t{0} << (from & 63);
+      if (word == (to - 1) >> 6 && (to & 63)) bits &= (std::uint64_t{1} << (to & 63)) - 1;
+      for (; bits; bits &= bits - 1, ++r) {
+        const std::size_t at = (word << 6) + static_cast<std::size_t>(__builtin_ctzll(bits));
+        if (s.id_at(at) == kSB) {
+          open.push_back({r, at});
+        } else if (open.empty()) {
+          loose[p].closing_earlier.push_back({r, at});
+        } else {
+          partners_[open.back().rank] = at;
+          partners_[r] = open.back().offset;
+          open.pop_back();
+        }
+      }
+    }
+  });
+  std::vector<Bracket> open;  // SBs of earlier parts still open
+  for (const Loose& part : loose) {
+    for (const Bracket& eb : part.closing_earlier) {
+      if (open.empty()) {
+        partners_[eb.rank] = kUnmatched;
+        continue;
+      }
+      partners_[open.back().rank] = eb.offset;
+      partners_[eb.rank] = open.back().offset;
       open.pop_back();
     }
+    open.insert(open.end(), part.open.begin(), part.open.end());
   }
-  count_marks();
+  for (const Bracket& sb : open) partners_[sb.rank] = kUnmatched;
   built_.store(true, std::memory_order_release);
 }
 
@@ -60,70 +126,9 @@ std::size_t BranchIndex::count_marks() const {
   for (std::size_t w = 0; w < mark_words_; ++w) {
     if ((w & ((std::size_t{1} << kSuperblockBits) - 1)) == 0) superblock_counts_[w >> kSuperblockBits] = before;
     counts_[w] = static_cast<std::uint32_t>(before - superblock_counts_[w >> kSuperblockBits]);
-    before += static_cast<std::size_t>(__builtin_popcountll(marks_[w]));
+    before += bit_count(marks_[w]);
   }
   return before;
-}
-
-void BranchIndex::build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) {
-  constexpr ModuleId kSB = rt::mid::SB;
-  constexpr ModuleId kEB = rt::mid::EB;
-  const StringView& s = string_;
-  const std::size_t n = parts.size();
-  // Each part marks its brackets and pairs those it can on its own; the
-  // rest are its EBs closing branches opened before it, then its SBs left
-  // open, in that order.
-  struct Part {
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // SB and EB offsets
-    std::vector<std::size_t> open_before, left_open;
-  };
-  std::vector<Part> found(n);
-  size_marks();
-  auto part_end = [&](std::size_t p) { return p + 1 < n ? parts[p + 1] : s.end; };
-  for (std::size_t p = 0; p < n; ++p) marks_[parts[p] >> 6] = 0;  // words parts share
-  marks_[s.end >> 6] = 0;
-  for_each_part(n, [&](std::size_t p) {
-    const std::size_t from = parts[p], to = part_end(p);
-    if ((to >> 6) > (from >> 6) + 1) std::fill(&marks_[(from >> 6) + 1], &marks_[to >> 6], 0);
-    Part& part = found[p];
-    for (std::size_t at = from; at < to; at = s.next(at)) {
-      const ModuleId id = s.id_at(at);
-      if (id != kSB && id != kEB) continue;
-      const std::uint64_t bit = std::uint64_t{1} << (at & 63);
-      std::uint64_t& word = marks_[at >> 6];
-      // Words a neighbouring part may also mark are shared.
-      if ((at >> 6) == (from >> 6) || (at >> 6) == (to >> 6))
-        std::atomic_ref<std::uint64_t>(word).fetch_or(bit, std::memory_order_relaxed);
-      else
-        word |= bit;
-      if (id == kSB) {
-        part.left_open.push_back(at);
-      } else if (part.left_open.empty()) {
-        part.open_before.push_back(at);
-      } else {
-        part.pairs.emplace_back(part.left_open.back(), at);
-        part.left_open.pop_back();
-      }
-    }
-  });
-  partners_.assign(count_marks(), kUnmatched);
-  for_each_part(n, [&](std::size_t p) {
-    for (auto [sb, eb] : found[p].pairs) {
-      partners_[rank(sb)] = eb;
-      partners_[rank(eb)] = sb;
-    }
-  });
-  std::vector<std::size_t> open;  // SBs of earlier parts still open
-  for (const Part& part : found) {
-    for (std::size_t eb : part.open_before) {
-      if (open.empty()) break;
-      partners_[rank(open.back())] = eb;
-      partners_[rank(eb)] = open.back();
-      open.pop_back();
-    }
-    open.insert(open.end(), part.left_open.begin(), part.left_open.end());
-  }
-  built_.store(true, std::memory_order_release);
 }
 
 }  // namespace sylva

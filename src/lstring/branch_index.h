@@ -78,9 +78,22 @@ class BranchIndex final : public BranchPartners {
     const std::size_t word = bracket >> 6;
     const std::uint64_t before = marks_[word] & ((std::uint64_t{1} << (bracket & 63)) - 1);
     return superblock_counts_[word >> kSuperblockBits] + counts_[word] +
-           static_cast<std::size_t>(__builtin_popcountll(before));
+           bit_count(before);
+  }
+  // The bits set in `word`. Where the build targets no popcount instruction
+  // (x86-64's baseline) the builtin is a call into libgcc; this is not.
+  static std::size_t bit_count(std::uint64_t word) {
+#ifdef __POPCNT__
+    return static_cast<std::size_t>(__builtin_popcountll(word));
+#else
+    word -= (word >> 1) & 0x5555555555555555ULL;
+    word = (word & 0x3333333333333333ULL) + ((word >> 2) & 0x3333333333333333ULL);
+    word = (word + (word >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
+    return static_cast<std::size_t>((word * 0x0101010101010101ULL) >> 56);
+#endif
   }
   void build() const;
+  void build_from(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) const;
   // Room for the marks of `string_`, not cleared.
   void size_marks() const;
   // Counts the marks before each word; returns them all.
@@ -95,7 +108,8 @@ class BranchIndex final : public BranchPartners {
   mutable std::size_t mark_words_ = 0, mark_room_ = 0;
   mutable std::vector<std::uint32_t> counts_;             // brackets before word w within its superblock
   mutable std::vector<std::size_t> superblock_counts_;    // brackets before each superblock
-  mutable std::vector<std::size_t> partners_;             // by rank
+  mutable std::unique_ptr<std::size_t[]> partners_;      // by rank; room for partner_room_
+  mutable std::size_t partner_room_ = 0;
 };
 
 }  // namespace sylva
