@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <mutex>
 
 #include "derive/derivation.h"
 #include "derive/keyed_random.h"
@@ -192,15 +193,48 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
       chunk.failure = std::current_exception();
     }
   };
-  run_tasks(threads_, n, [&](std::size_t c) { rewrite(c, starts[c]); });
+  // The parts are joined in order as the chunks before them are done, by
+  // whichever thread finishes a chunk while no other is joining, so most of
+  // the moving happens while later chunks are still being rewritten. A part
+  // joins early only where the serial join below would leave it as it is:
+  // its chunk ended in its window without failing, and began where the one
+  // before it stopped. The first part that cannot stops the early joins.
+  std::vector<std::size_t> place(n + 1, 0);  // where each part goes in next_
+  unsigned char* data = next_.data_for_writing();
+  std::mutex joining;
+  std::vector<bool> done(n, false);
+  std::size_t joined = 0;  // parts [0, joined) are in place
+  bool a_thread_joins = false;
+  auto joins_early = [&](std::size_t c) {
+    return !chunks[c].failure && chunks[c].out.writes_in_window() && (c == 0 || chunks[c - 1].reached == starts[c]);
+  };
+  auto finish = [&](std::size_t c) {
+    std::unique_lock<std::mutex> lock(joining);
+    done[c] = true;
+    if (a_thread_joins) return;
+    a_thread_joins = true;
+    while (joined < n && done[joined] && joins_early(joined)) {
+      const std::size_t j = joined;
+      const std::size_t size = chunks[j].out.size_bytes();
+      place[j + 1] = place[j] + size;
+      lock.unlock();
+      if (size && place[j] != window[j]) std::memmove(data + place[j], data + window[j], size);
+      lock.lock();
+      joined = j + 1;
+    }
+    a_thread_joins = false;
+  };
+  run_tasks(threads_, n, [&](std::size_t c) {
+    rewrite(c, starts[c]);
+    finish(c);
+  });
   // A chunk whose first modules the one before rewrote (a predecessor of
   // several modules, or a cut, across the boundary) is rewritten again from
   // where that one stopped, as a serial pass would go on. A failure is the
   // serial pass's only where that pass would have got to it.
-  std::vector<std::size_t> place(n + 1, 0);  // where each part goes in next_
   double spread = 1;
   for (std::size_t c = 0; c < n; ++c) {
-    if (c > 0 && chunks[c - 1].reached != starts[c]) {
+    if (c >= joined && c > 0 && chunks[c - 1].reached != starts[c]) {
       if (chunks[c - 1].reached >= end_of(c)) {
         chunks[c].out.clear();
         chunks[c].failure = nullptr;
@@ -217,20 +251,20 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   chunk_growth_spread_ = std::min(spread, 4.0);
   const std::size_t total = place[n];
   next_.reserve_unwritten_keeping(total);  // where the parts outgrew the windows
-  // The parts moved into place: those moving down first, lowest first; then
-  // those moving up, highest first; then those that left their windows.
-  // Each then writes over nothing that has yet to move.
-  unsigned char* data = next_.data_for_writing();
+  // The parts not joined yet moved into place: those moving down first,
+  // lowest first; then those moving up, highest first; then those that left
+  // their windows. Each then writes over nothing that has yet to move.
+  data = next_.data_for_writing();
   auto move = [&](std::size_t c) {
     const ModuleString& part = chunks[c].out;
     const unsigned char* from = part.writes_in_window() ? data + window[c] : part.data();
     if (part.size_bytes() && from != data + place[c]) std::memmove(data + place[c], from, part.size_bytes());
   };
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = joined; c < n; ++c)
     if (chunks[c].out.writes_in_window() && place[c] <= window[c]) move(c);
-  for (std::size_t c = n; c-- > 0;)
+  for (std::size_t c = n; c-- > joined;)
     if (chunks[c].out.writes_in_window() && place[c] > window[c]) move(c);
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = joined; c < n; ++c)
     if (!chunks[c].out.writes_in_window()) move(c);
   next_.set_written_size(total);
   std::vector<std::size_t> joins;
