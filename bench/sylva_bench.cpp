@@ -7,6 +7,10 @@
 //       the strings' memory is allocated and faulted in while deriving;
 //       `reused` derives again in the same Simulation, whose string buffers
 //       are already large enough.
+//   Threads/<model>/<steps>/<threads>
+//       As Derive/.../fresh, on that many threads (1, 2, 4 ... up to the
+//       machine's cores): the derivation's own speed-up, without the start
+//       and end of a process.
 //   DiffusionStep
 //       diffusion.l grown to 2^21 cells (untimed), then one timed diffusion
 //       step per iteration.
@@ -41,12 +45,14 @@
 #include <sys/resource.h>
 #include <time.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
 #include <unistd.h>
 
 #include "api/simulation.h"
@@ -104,15 +110,23 @@ void set_string_counters(benchmark::State& state, const sylva::Simulation& d) {
 
 // ---- derivation throughput ---------------------------------------------------
 
-void derive(benchmark::State& state, const std::string& model, int steps, bool fresh) {
-  std::unique_ptr<sylva::Simulation> simulation = std::make_unique<sylva::Simulation>(model_path(model), warm_options());
+// threads: 0 for one per core, as a run's default.
+std::unique_ptr<sylva::Simulation> new_simulation(const std::string& model, int threads) {
+  sylva::SimulationOptions options;
+  options.build = warm_options();
+  options.threads = threads;
+  return std::make_unique<sylva::Simulation>(model_path(model), options);
+}
+
+void derive(benchmark::State& state, const std::string& model, int steps, bool fresh, int threads) {
+  std::unique_ptr<sylva::Simulation> simulation = new_simulation(model, threads);
   double total_seconds = 0, last_seconds = 0, total_cpu = 0, last_cpu = 0;
   double total_modules = 0, last_modules = 0;
   const bool print_steps = std::getenv("SYLVA_BENCH_STEPS") != nullptr;
   for (auto _ : state) {
     if (fresh) {
       simulation.reset();
-      simulation = std::make_unique<sylva::Simulation>(model_path(model), warm_options());
+      simulation = new_simulation(model, threads);
     }
     sylva::Simulation& d = *simulation;
     d.rewind();
@@ -243,12 +257,22 @@ void register_all() {
     for (bool fresh : {true, false}) {
       const std::string name = std::string("Derive/") + m.model + "/" + std::to_string(m.steps) +
                                (fresh ? "/fresh" : "/reused");
-      benchmark::RegisterBenchmark(name.c_str(), derive, std::string(m.model), m.steps, fresh)
+      benchmark::RegisterBenchmark(name.c_str(), derive, std::string(m.model), m.steps, fresh, 0)
           ->UseManualTime()
           ->Iterations(m.iterations)
           ->Unit(benchmark::kMillisecond);
     }
   }
+  // Speed-up with threads: a context-free model and an ordinary-context one.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (const Derived& m : {derived[0], derived[3]})
+    for (int threads = 1; threads <= cores; threads *= 2)
+      benchmark::RegisterBenchmark(
+          ("Threads/" + std::string(m.model) + "/" + std::to_string(m.steps) + "/" + std::to_string(threads)).c_str(),
+          derive, std::string(m.model), m.steps, true, threads)
+          ->UseManualTime()
+          ->Iterations(m.iterations)
+          ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("DiffusionStep", diffusion_step)
       ->UseManualTime()
       ->Iterations(20)

@@ -41,7 +41,7 @@ bool for_each_group(const std::vector<std::uint32_t>& candidates, const abi::Rul
 }
 
 // Where a call into the model is, for a fault there.
-model_faults::CallSite site_of(const abi::Rule& rule, int step) {
+model_faults::CallSite site_of(const abi::Rule& rule, const int* step) {
   static constexpr const char* kKinds[] = {"production", "decomposition rule", "interpretation rule",
                                            "derivative rule", "event"};
   const auto kind = static_cast<std::size_t>(rule.kind);
@@ -49,7 +49,7 @@ model_faults::CallSite site_of(const abi::Rule& rule, int step) {
 }
 
 model_faults::CallSite site_of(const abi::ModelDescriptor& model, const char* statement) {
-  return {statement, model.source_file, 0, model.control->step};
+  return {statement, model.source_file, 0, &model.control->step};
 }
 
 
@@ -58,10 +58,12 @@ model_faults::CallSite site_of(const abi::ModelDescriptor& model, const char* st
 Derivation::Derivation(const abi::ModelDescriptor& model, MessageSink messages)
     : model_(model), types_(ModuleTypes::from_model(model)), rules_(model), messages_(std::move(messages)) {
   model_faults::install_handler();
-  for (std::uint32_t r = 0; r < model.rule_count; ++r)
+  for (std::uint32_t r = 0; r < model.rule_count; ++r) {
     if (pattern_length(model.rules[r]) > kMaxPattern)
       throw ModelError(SourceLocation{model.rules[r].file, model.rules[r].line, 0},
                        "a predecessor may have at most " + std::to_string(kMaxPattern) + " modules");
+    rule_sites_.push_back(site_of(model.rules[r], &model.control->step));
+  }
   for (std::uint32_t f = 0; f < model.filter_count; ++f) {
     const abi::ContextFilter& filter = model.filters[f];
     std::vector<std::uint8_t> skipped(model.module_count, filter.consider ? 1 : 0);
@@ -424,7 +426,7 @@ bool Derivation::try_forward(const abi::Rule& rule, const StringView& src, std::
   call.rates = rates_.data();
   call.event_probe = probing_events_;
   if (keyed_random_) keyed_random::at_module(pos);
-  model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
+  model_faults::call_model(rule_site(rule), [&] { rule.body(&call, params); });
   // A derivative rule, or an event rule asked for its condition: it applies
   // where it matches, and produces nothing.
   if (rule.kind == RuleKind::Derivative || call.event_probe) {
@@ -468,7 +470,7 @@ bool Derivation::try_backward(const abi::Rule& rule, const StringView& src, std:
   in_body.set_new_right(new_string, new_right);
   in_body.attach(call);
   if (keyed_random_) keyed_random::at_module(end);
-  model_faults::call_model(site_of(rule, control().step), [&] { rule.body(&call, params); });
+  model_faults::call_model(rule_site(rule), [&] { rule.body(&call, params); });
   if (!call.produced) return false;
   *consumed = at;
   return true;

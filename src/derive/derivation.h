@@ -21,6 +21,7 @@
 #include "lstring/built_branches.h"
 #include "lstring/module_string.h"
 #include "lstring/module_types.h"
+#include "support/model_faults.h"
 #include "sylva/abi.h"
 
 namespace sylva::derive {
@@ -188,6 +189,10 @@ class Derivation {
   void track_lsystem(ModuleId id, const unsigned char* params);
   void track_lsystems(const StringView& src, std::size_t from, std::size_t to);
   SkipTable skip_table(const abi::Rule& rule) const;
+  // Where a fault in the rule's body is reported (one per rule of the model).
+  const model_faults::CallSite& rule_site(const abi::Rule& rule) const {
+    return rule_sites_[static_cast<std::size_t>(&rule - model_.rules)];
+  }
   // Whether a production's predecessor holds one of these module types.
   bool predecessor_holds(const std::vector<ModuleId>& ids) const;
   // The current string as context matching sees it (a ring if the model says so).
@@ -299,6 +304,7 @@ class Derivation {
   ModuleTypes types_;
   RuleIndex rules_;
   std::vector<std::vector<std::uint8_t>> skip_tables_;
+  std::vector<model_faults::CallSite> rule_sites_;
   MessageSink messages_;
 
   ModuleString string_;

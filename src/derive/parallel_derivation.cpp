@@ -234,7 +234,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   // serial pass's only where that pass would have got to it.
   double spread = 1;
   for (std::size_t c = 0; c < n; ++c) {
-    if (c >= joined && c > 0 && chunks[c - 1].reached != starts[c]) {
+    if (c > 0 && chunks[c - 1].reached != starts[c]) {
       if (chunks[c - 1].reached >= end_of(c)) {
         chunks[c].out.clear();
         chunks[c].failure = nullptr;

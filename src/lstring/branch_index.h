@@ -5,9 +5,9 @@
 // context steps back over sibling branches. Walked module by module, a step
 // over a branching structure costs the size of the subtrees skipped, which
 // on a tree of depth d is about d times the string. The index answers each
-// skip with a few memory reads. It is built in one pass over the string the
-// first time a long branch is skipped, so a pass that meets none pays
-// nothing.
+// skip with a few memory reads. It is built (a walk over the string, then
+// a pass over the brackets it marked) the first time a long branch is
+// skipped, so a pass that meets none pays nothing.
 //
 // Layout: a bit per byte of the string marks where a bracket (SB or EB)
 // starts; a bracket's rank is the count of brackets before its 64-byte word

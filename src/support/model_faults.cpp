@@ -99,7 +99,7 @@ void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
     text << "sylva: ";
   }
   text << "error: model crashed in " << site.what << " (" << describe(*info) << ") (step "
-       << static_cast<long>(site.step) << ")\n";
+       << static_cast<long>(site.step_now()) << ")\n";
   text.write_to(STDERR_FILENO);
   interruption::clean_up_now();
   interruption::end_as_signal(signal_number);
@@ -165,7 +165,7 @@ void rethrow_as_model_error(const CallSite& site) {
   }
   throw ModelError(SourceLocation{site.file ? site.file : "sylva", site.line, 0},
                    std::string("model threw an exception in ") + site.what + " (" + what + ") (step " +
-                       std::to_string(site.step) + ")");
+                       std::to_string(site.step_now()) + ")");
 }
 
 }  // namespace sylva::model_faults

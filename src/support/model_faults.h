@@ -25,7 +25,11 @@ struct CallSite {
   const char* what = nullptr;  // "production", "StartEach" ...; null: not in model code
   const char* file = nullptr;  // may be null
   int line = 0;                // 0: not known
-  int step = 0;                // the derivation step (StepNo())
+  // The derivation step (StepNo()), read where a fault is reported, so one
+  // site serves a rule at every step; null: not known.
+  const int* step = nullptr;
+
+  int step_now() const { return step ? *step : 0; }
 };
 
 // The calling thread's site, or null outside model code; a synchronous signal
