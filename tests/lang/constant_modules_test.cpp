@@ -87,6 +87,25 @@ TEST(ConstantModules, TheBytesAreThosePutModuleWrites) {
   EXPECT_EQ(constant_module_bytes(511, {"float", "int"}, {lc({"1"}), lc({"2"})}), put_module_bytes(511, 1.0f, 2));
 }
 
+// A struct parameter is copied a word at a time (rt::put_param): what it
+// writes is still the struct's bytes, between the ids, beside other parameters.
+struct Cell {
+  float a, h, x;
+  int age, pol;
+};
+struct Wide {
+  double d;
+  int k, m;
+};
+
+TEST(ConstantModules, PutModuleWritesAStructAsItsBytes) {
+  const Cell cell{0.5f, 1.25f, -3.0f, 7, 1};
+  const Wide wide{2.5, -4, 9};
+  EXPECT_EQ(put_module_bytes(12, cell), expected_bytes(12, cell));
+  EXPECT_EQ(put_module_bytes(300, cell, 2.0f), expected_bytes(300, cell, 2.0f));
+  EXPECT_EQ(put_module_bytes(12, 1, wide, cell), expected_bytes(12, 1, wide, cell));
+}
+
 TEST(ConstantModules, LiteralsConvertAsAnArgumentWould) {
   EXPECT_EQ(one("float", lc({"1.5"})), expected_bytes(7, 1.5f));
   EXPECT_EQ(one("float", lc({"0.1"})), expected_bytes(7, static_cast<float>(0.1)));

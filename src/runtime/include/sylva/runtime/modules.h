@@ -44,7 +44,22 @@ inline typename ParamAt<I, T...>::type param(const unsigned char* params) {
 
 template <class T>
 inline void put_param(unsigned char*& at, const T& value) {
-  std::memcpy(at, static_cast<const void*>(&value), sizeof value);
+  if constexpr (std::is_class_v<T> && sizeof(T) > 8 && sizeof(T) % 4 == 0 && alignof(T) >= 4) {
+    // A struct a rule body has just set field by field: copied a word at a
+    // time, each read is answered by the store of its own field. Read whole
+    // (16 bytes at once), it waits until those stores reach the cache, which
+    // cost the structs benchmark a fifth of its rule bodies' time.
+    // (The empty asm keeps the compiler from merging the words again.)
+    const auto* from = reinterpret_cast<const unsigned char*>(&value);
+    for (std::size_t k = 0; k < sizeof(T); k += 4) {
+      std::uint32_t word;
+      std::memcpy(&word, from + k, 4);
+      __asm__("" : "+r"(word));
+      std::memcpy(at + k, &word, 4);
+    }
+  } else {
+    std::memcpy(at, static_cast<const void*>(&value), sizeof value);
+  }
   at += sizeof value;
 }
 
@@ -56,8 +71,14 @@ inline constexpr std::size_t module_bytes = abi::largest_module_size(params_size
 // `at`. Arguments convert to the declared parameter types as they would in a
 // function call. A produce statement reserves room for all its modules once,
 // then writes them one after another.
+// How put_module takes a parameter: a struct by reference, so that its words
+// are read where the body set them (put_param); the rest by value, so that a
+// wrong argument is reported as one that cannot convert.
+template <class T>
+using produced_argument = std::conditional_t<std::is_class_v<T>, const T&, T>;
+
 template <class... T>
-inline void put_module(unsigned char*& at, abi::ModuleId id, std::type_identity_t<T>... values) {
+inline void put_module(unsigned char*& at, abi::ModuleId id, produced_argument<T>... values) {
   if constexpr (params_size<T...> != 0) {
     abi::put_leading_id(at, id);
     (put_param<T>(at, values), ...);
