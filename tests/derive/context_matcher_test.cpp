@@ -120,37 +120,31 @@ class ContextMatcherTest : public ::testing::Test {
   // Right context `pat` from module number `pos` (the module just after the strict predecessor).
   std::string right(const std::string& str, int pos, const std::string& pat,
                     const std::vector<std::uint8_t>* skip = nullptr) const {
-    ModuleString s = parse(str);
-    std::vector<ModuleId> p = pattern(pat);
-    std::vector<const unsigned char*> params(p.size()), quick_params(p.size());
-    const StringView v = s.view(types_);
-    const int n = static_cast<int>(p.size());
-    const SkipTable table = skip ? skip->data() : nullptr;
-    ContextCursor walked{offset(s, pos), false}, quick = walked;
-    const bool ok = match_right_context(v, walked, p.data(), n, table, params.data());
-    // The inline first try decides as the walk does, and leaves the cursor where it does.
-    EXPECT_EQ(match_right_context_here(v, quick, p.data(), n, table, quick_params.data()), ok) << str << " > " << pat;
-    if (ok) {
-      EXPECT_EQ(quick_params, params) << str << " > " << pat;
-      EXPECT_EQ(quick.at, walked.at) << str << " > " << pat;
-    }
-    return describe(s, ok, params);
+    return match(true, str, pos, pat, skip);
   }
   // Left context `pat` for the strict predecessor starting at module number `pos`.
   std::string left(const std::string& str, int pos, const std::string& pat,
                    const std::vector<std::uint8_t>* skip = nullptr) const {
+    return match(false, str, pos, pat, skip);
+  }
+  std::string match(bool right, const std::string& str, int pos, const std::string& pat,
+                    const std::vector<std::uint8_t>* skip) const {
     ModuleString s = parse(str);
-    std::vector<ModuleId> p = pattern(pat);
+    const std::vector<ModuleId> p = pattern(pat);
     std::vector<const unsigned char*> params(p.size()), quick_params(p.size());
     const StringView v = s.view(types_);
     const int n = static_cast<int>(p.size());
     const SkipTable table = skip ? skip->data() : nullptr;
     ContextCursor walked{offset(s, pos), false}, quick = walked;
-    const bool ok = match_left_context(v, walked, p.data(), n, table, params.data());
-    EXPECT_EQ(match_left_context_here(v, quick, p.data(), n, table, quick_params.data()), ok) << pat << " < " << str;
+    const bool ok = right ? match_right_context(v, walked, p.data(), n, table, params.data())
+                          : match_left_context(v, walked, p.data(), n, table, params.data());
+    // The inline first try decides as the walk does, and leaves the cursor where it does.
+    const bool quick_ok = right ? match_right_context_here(v, quick, p.data(), n, table, quick_params.data())
+                                : match_left_context_here(v, quick, p.data(), n, table, quick_params.data());
+    EXPECT_EQ(quick_ok, ok) << str << (right ? " > " : " < ") << pat;
     if (ok) {
-      EXPECT_EQ(quick_params, params) << pat << " < " << str;
-      EXPECT_EQ(quick.at, walked.at) << pat << " < " << str;
+      EXPECT_EQ(quick_params, params) << str << (right ? " > " : " < ") << pat;
+      EXPECT_EQ(quick.at, walked.at) << str << (right ? " > " : " < ") << pat;
     }
     return describe(s, ok, params);
   }

@@ -67,16 +67,16 @@ inline void put_param(unsigned char*& at, const T& value) {
 template <class... T>
 inline constexpr std::size_t module_bytes = abi::largest_module_size(params_size<T...>);
 
-// Writes one module at `at` (room for it has been reserved) and advances
-// `at`. Arguments convert to the declared parameter types as they would in a
-// function call. A produce statement reserves room for all its modules once,
-// then writes them one after another.
 // How put_module takes a parameter: a struct by reference, so that its words
 // are read where the body set them (put_param); the rest by value, so that a
 // wrong argument is reported as one that cannot convert.
 template <class T>
 using produced_argument = std::conditional_t<std::is_class_v<T>, const T&, T>;
 
+// Writes one module at `at` (room for it has been reserved) and advances
+// `at`. Arguments convert to the declared parameter types as they would in a
+// function call. A produce statement reserves room for all its modules once,
+// then writes them one after another.
 template <class... T>
 inline void put_module(unsigned char*& at, abi::ModuleId id, produced_argument<T>... values) {
   if constexpr (params_size<T...> != 0) {
