@@ -293,7 +293,7 @@ RunRecord make_lazy_run_record(const Simulation& simulation, const SimulationOpt
   r.language = options.build.language == "auto" ? "" : options.build.language;
   r.keyed_random = options.keyed_random;
   r.cpfg_window_seeding = options.cpfg_window_seeding;
-  r.compiler = options.build.compiler.empty() ? default_compiler() : options.build.compiler;
+  r.compiler = compiler_or_default(options.build.compiler);
   return r;
 }
 

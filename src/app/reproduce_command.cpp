@@ -61,8 +61,7 @@ int run_reproduce(const std::string& file, const build::BuildOptions& build) {
 
   Simulation simulation(record.model.path, options);
   // The files were hashed above: only the versions are compared here.
-  const std::string compiler = compiler_version(options.build.compiler.empty() ? default_compiler()
-                                                                                : options.build.compiler);
+  const std::string compiler = compiler_version(compiler_or_default(options.build.compiler));
   if (!record.compiler_version.empty() && compiler != record.compiler_version)
     std::fprintf(stderr, "sylva: note: the model was compiled by %s, now by %s\n", record.compiler_version.c_str(),
                  compiler.c_str());

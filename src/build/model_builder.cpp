@@ -95,7 +95,7 @@ std::string runtime_pch(const std::string& runtime, const std::string& compiler)
 
 ResolvedOptions resolve(const BuildOptions& options) {
   ResolvedOptions r;
-  r.compiler = options.compiler.empty() ? default_compiler() : options.compiler;
+  r.compiler = compiler_or_default(options.compiler);
   r.runtime = options.runtime_include_dir.empty() ? default_runtime_include_dir() : options.runtime_include_dir;
   r.defines = options.defines;
   r.include_dirs = options.include_dirs;

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <iterator>
+#include <span>
 #include <utility>
-#include <vector>
 
 #include "gpu/lsystem_body_parser.h"
 
@@ -91,14 +92,14 @@ struct BinaryOperator {
   const char* text;
   char code;
 };
-const std::vector<std::vector<BinaryOperator>> kBinaryLevels = {
-    {{"||", '|'}},
-    {{"&&", '&'}},
-    {{"==", 'e'}, {"!=", 'n'}},
-    {{"<", '<'}, {">", '>'}, {"<=", 'l'}, {">=", 'g'}},
-    {{"+", '+'}, {"-", '-'}},
-    {{"*", '*'}, {"/", '/'}, {"%", '%'}},
-};
+constexpr BinaryOperator kOr[] = {{"||", '|'}};
+constexpr BinaryOperator kAnd[] = {{"&&", '&'}};
+constexpr BinaryOperator kEquality[] = {{"==", 'e'}, {"!=", 'n'}};
+constexpr BinaryOperator kRelational[] = {{"<", '<'}, {">", '>'}, {"<=", 'l'}, {">=", 'g'}};
+constexpr BinaryOperator kAdditive[] = {{"+", '+'}, {"-", '-'}};
+constexpr BinaryOperator kMultiplicative[] = {{"*", '*'}, {"/", '/'}, {"%", '%'}};
+constexpr std::span<const BinaryOperator> kBinaryLevels[] = {kOr,       kAnd,      kEquality,
+                                                             kRelational, kAdditive, kMultiplicative};
 
 }  // namespace
 
@@ -107,7 +108,7 @@ Expr BodyParser::logical_or() { return binary_level(0); }
 // Operands of the next tighter level joined, left to right, by this level's
 // operators.
 Expr BodyParser::binary_level(std::size_t level) {
-  if (level == kBinaryLevels.size()) return unary();
+  if (level == std::size(kBinaryLevels)) return unary();
   Expr l = binary_level(level + 1);
   while (true) {
     const BinaryOperator* found = nullptr;

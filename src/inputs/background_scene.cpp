@@ -226,7 +226,7 @@ BackgroundScene read_background_scene(const std::vector<std::string>& paths, con
   std::vector<PreprocessedLine> lines;
   for (const std::string& path : paths) {
     read_input_file(path, "background scene file");
-    for (PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_compiler() : compiler))
+    for (PreprocessedLine& line : preprocess_file(path, compiler_or_default(compiler)))
       lines.push_back(std::move(line));
   }
   return parse_background_scene(lines, from_materials);

@@ -288,7 +288,7 @@ ViewFile read_view_file(const std::string& path, const std::string& compiler, Vi
   view.dialect = dialect;
   Parser parser(view);
   OriginalColumns columns;
-  for (const PreprocessedLine& line : preprocess_file(path, compiler.empty() ? default_compiler() : compiler)) {
+  for (const PreprocessedLine& line : preprocess_file(path, compiler_or_default(compiler))) {
     std::optional<Command> c = split_command(line.text, line.line);
     if (!c) continue;
     columns.restore(c->name_word, line.file, line.line);

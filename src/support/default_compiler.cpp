@@ -10,4 +10,6 @@ std::string default_compiler() {
   return "g++";
 }
 
+std::string compiler_or_default(const std::string& named) { return named.empty() ? default_compiler() : named; }
+
 }  // namespace sylva

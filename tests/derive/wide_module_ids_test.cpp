@@ -19,6 +19,10 @@ std::string model_with_wide_ids(const std::string& rules) {
   return text + "module W(int);\nmodule Q();\nderivation length: 2;\n" + rules;
 }
 
+std::string derived(const std::string& name, const std::string& rules) {
+  return derive_string(write_temp_file("wide-ids", name, model_with_wide_ids(rules)));
+}
+
 TEST(WideModuleIds, TheLastDeclaredModulesHaveThem) {
   const std::string path = write_temp_file("wide-ids", "ids.l", model_with_wide_ids("axiom: W(1) Q;\n"));
   build::BuildOptions options;
@@ -35,21 +39,19 @@ TEST(WideModuleIds, TheLastDeclaredModulesHaveThem) {
 // branch's end; W(4) sees Q on its right, and the first rule wins.
 //   W(11) [ W(1) ] F199 Q F0 W(14) [ W(4) ] F199 Q
 TEST(WideModuleIds, ContextAndBranchesWalkOverThem) {
-  const std::string path = write_temp_file("wide-ids", "context.l",
-                                           model_with_wide_ids("axiom: W(1) Q W(2);\n"
-                                                               "W(x) > Q : { produce W(x + 10) SB() W(x) EB() F199; }\n"
-                                                               "Q < W(x) : { produce F0 W(x * 2) Q; }\n"));
-  EXPECT_EQ(derive_string(path), "W(11) SB W(1) EB F199 Q F0 W(14) SB W(4) EB F199 Q");
+  EXPECT_EQ(derived("context.l", "axiom: W(1) Q W(2);\n"
+                                 "W(x) > Q : { produce W(x + 10) SB() W(x) EB() F199; }\n"
+                                 "Q < W(x) : { produce F0 W(x * 2) Q; }\n"),
+            "W(11) SB W(1) EB F199 Q F0 W(14) SB W(4) EB F199 Q");
 }
 
 // Backward steps read the successors already built on the right:
 //   Q W(1) W(2) Q -> Q W(3) W(2) Q -> Q W(5) W(2) Q
 TEST(WideModuleIds, NewContextReadsThemBackward) {
-  const std::string path = write_temp_file("wide-ids", "backward.l",
-                                           model_with_wide_ids("Start: { Backward(); }\n"
-                                                               "axiom: Q W(1) W(2) Q;\n"
-                                                               "W(x) >> W(y) : { produce W(x + y); }\n"));
-  EXPECT_EQ(derive_string(path), "Q W(5) W(2) Q");
+  EXPECT_EQ(derived("backward.l", "Start: { Backward(); }\n"
+                                  "axiom: Q W(1) W(2) Q;\n"
+                                  "W(x) >> W(y) : { produce W(x + y); }\n"),
+            "Q W(5) W(2) Q");
 }
 
 }  // namespace

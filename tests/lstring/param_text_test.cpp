@@ -23,7 +23,6 @@ using abi::ParamField;
 using abi::ParamKind;
 using abi::ParamType;
 
-
 // A block of parameters packed in order, with the fields that describe it.
 struct Block {
   std::vector<unsigned char> bytes;

@@ -43,5 +43,11 @@ TEST(DefaultCompiler, SylvaCxxThenCxxThenGxx) {
   }
 }
 
+TEST(DefaultCompiler, ANamedCompilerComesFirst) {
+  ScopedVariable sylva("SYLVA_CXX", "clang++-17");
+  EXPECT_EQ(compiler_or_default("g++-12"), "g++-12");
+  EXPECT_EQ(compiler_or_default(""), "clang++-17");
+}
+
 }  // namespace
 }  // namespace sylva
