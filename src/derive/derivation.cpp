@@ -544,6 +544,7 @@ std::size_t Derivation::forward_range(const StringView& src, std::size_t from, s
       continue;
     }
     flush();
+    out.note_module_start(known_start_spacing_);
     const std::size_t start = pos;
     if (cut) {
       // Cut drops itself and the rest of its branch; the closing EB stays.
@@ -669,6 +670,7 @@ std::size_t Derivation::expand(RuleKind kind, const StringView& source, int dept
       continue;
     }
     flush();
+    out.note_module_start(known_start_spacing_);
     std::size_t consumed = 0;
     if (depth >= max_depth) {
       if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) {

@@ -348,6 +348,10 @@ class Derivation {
   ModuleString reaction_scratch_;               // where those bodies write
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
+  // How far apart passes note module starts in what they write, for the
+  // next parallel pass to cut the string at (chunk_starts): a quarter of a
+  // chunk at most.
+  std::size_t known_start_spacing_ = kMinChunkBytes / 4;
   // Each chunk's successors in a parallel pass, kept from pass to pass so
   // that their pages are faulted in once, not at every step. A cache line
   // each: threads appending to neighbouring buffers would otherwise write

@@ -72,6 +72,7 @@ std::string Derivation::parallel_explanation() const {
 void Derivation::set_threads(int threads, std::size_t min_chunk_bytes) {
   threads_ = std::max(threads, 1);
   min_chunk_bytes_ = std::max<std::size_t>(min_chunk_bytes, 1);
+  known_start_spacing_ = std::max<std::size_t>(min_chunk_bytes_ / 4, 1);
   forward_parallel_ = serial_reason(abi::RuleKind::Production).empty();
   decomposition_parallel_ = serial_reason(abi::RuleKind::Decomposition).empty();
 }
@@ -102,17 +103,23 @@ std::vector<std::size_t> Derivation::chunk_starts(const StringView& src) const {
   if (threads_ < 2 || bytes < 2 * min_chunk_bytes_) return {};
   const std::size_t chunks =
       std::min(bytes / min_chunk_bytes_, static_cast<std::size_t>(threads_) * kChunksPerThread);
-  // Where the last parallel pass joined the parts of this string, if it
-  // made as many: no walk needed.
-  const std::vector<std::size_t>& joins = string_.known_module_starts();
-  if (src.data == string_.data() && src.begin == 0 && joins.size() == chunks && joins.front() == 0) return joins;
+  // Each cut at the first module start at or after its share of the bytes:
+  // a start the last pass noted, if one lies close enough, or one reached
+  // by walking from the last start known before it.
+  const std::vector<std::size_t>& known = string_.known_module_starts();
+  const bool use_known = src.data == string_.data() && src.begin == 0;
   std::vector<std::size_t> starts{src.begin};
   std::size_t pos = src.begin;
   for (std::size_t c = 1; c < chunks; ++c) {
     const std::size_t target = src.begin + bytes / chunks * c;
+    if (use_known && pos < target) {
+      const auto after = std::lower_bound(known.begin(), known.end(), target);
+      if (after != known.end() && *after - target < known_start_spacing_) pos = *after;
+      else if (after != known.begin()) pos = std::max(pos, *std::prev(after));
+    }
     while (pos < target) pos = src.next(pos);
     if (pos >= src.end) break;
-    starts.push_back(pos);
+    if (pos > starts.back()) starts.push_back(pos);
   }
   return starts;
 }
@@ -267,10 +274,15 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   for (std::size_t c = joined; c < n; ++c)
     if (!chunks[c].out.writes_in_window()) move(c);
   next_.set_written_size(total);
-  std::vector<std::size_t> joins;
-  for (std::size_t c = 0; c < n; ++c)
-    if (place[c] < total && (joins.empty() || joins.back() != place[c])) joins.push_back(place[c]);
-  next_.set_known_module_starts(std::move(joins));
+  // The starts the chunks noted, and where they joined, for the next pass.
+  std::vector<std::size_t> known;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (place[c] == place[c + 1]) continue;
+    if (known.empty() || known.back() < place[c]) known.push_back(place[c]);
+    for (std::size_t start : chunks[c].out.known_module_starts())
+      if (place[c] + start > known.back()) known.push_back(place[c] + start);
+  }
+  next_.set_known_module_starts(std::move(known));
 }
 
 }  // namespace sylva::derive

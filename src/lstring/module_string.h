@@ -114,12 +114,19 @@ class ModuleString {
   // The first `size` bytes were written through windows.
   void set_written_size(std::size_t size);
 
-  // Offsets known to start modules, in order, or none: where a parallel pass
-  // joined its parts. The next parallel pass cuts the string there rather
-  // than walking it to find module boundaries. Appending keeps them; what
-  // replaces or cuts the string drops them.
+  // Offsets known to start modules, in order, or none: some of the starts a
+  // pass noted as it wrote the string, and where a parallel pass joined its
+  // parts. The next parallel pass cuts the string near them rather than
+  // walking it to find module boundaries: a walk is serial, and on many
+  // threads walking a string took longer than rewriting it. Appending keeps
+  // them; what replaces or cuts the string drops them.
   const std::vector<std::size_t>& known_module_starts() const { return known_starts_; }
   void set_known_module_starts(std::vector<std::size_t> starts) { known_starts_ = std::move(starts); }
+  // Notes that a module starts where the string now ends, unless one was
+  // noted less than `spacing` bytes before.
+  void note_module_start(std::size_t spacing) {
+    if (known_starts_.empty() || buffer_.size - known_starts_.back() >= spacing) known_starts_.push_back(buffer_.size);
+  }
   // Takes a copy of `n` bytes of modules.
   void assign(const unsigned char* bytes, std::size_t n);
   // Takes what `built` holds, buffer and all, moved to its start; `built`

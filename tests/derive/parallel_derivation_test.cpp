@@ -5,6 +5,7 @@
 // byte; and the keyed random mode gives one string at any thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <string>
@@ -102,6 +103,57 @@ TEST(ParallelDerivation, ExplainsWhichRuleKeepsARunSerial) {
   EXPECT_NE(run.explanation.find("counter.l:6: production assigns `count`"), std::string::npos) << run.explanation;
   EXPECT_EQ(run.string, "A A A A A A A A\n");
   EXPECT_EQ(derive(example_path("koch/koch.l"), 4).explanation.rfind("productions: parallel on 4 threads", 0), 0u);
+}
+
+// The next parallel pass cuts the string where the last one noted that
+// modules start, walking it only where none was noted nearby: each noted
+// start must be a module's, and they must lie close enough together that
+// walking is the exception.
+TEST(ParallelDerivation, NotesWhereModulesStartForTheNextPass) {
+  // The starts of the productions' strings, and of their decompositions.
+  const std::string rules =
+      "#include <lpfgall.h>\n"
+      "derivation length: 12;\n"
+      "module A(float);\n"
+      "module B(int, float);\n"
+      "module C;\n"
+      "module D;\n"
+      "axiom: A(1) B(2, 3) C;\n"
+      "A(x) : produce A(x + 1) C B(1, x) A(x);\n"
+      "B(i, x) : produce C A(x) C;\n";
+  for (const std::string& model : {write_temp_file("parallel-starts", "productions.l", rules),
+                                   write_temp_file("parallel-starts-decomposed", "decomposed.l",
+                                                   rules + "decomposition:\nC : produce D;\n")}) {
+    for (int threads : {1, 4}) {
+      SCOPED_TRACE(model + " on " + std::to_string(threads) + " threads");
+      SimulationOptions options;
+      options.build.cache_dir = SYLVA_TEST_CACHE_DIR;
+      options.threads = threads;
+      options.parallel_chunk_bytes = 400;  // starts noted at least 100 bytes apart
+      Simulation simulation(model, options, [](const std::string&) {});
+      // Checked after every step, before the next pass relies on them.
+      for (int step = 1; step <= 12; ++step) {
+        simulation.step();
+        const ModuleString& string = simulation.string();
+        const StringView view = string.view(simulation.types());
+        std::vector<std::size_t> starts;
+        for (std::size_t at = 0; at < view.end; at = view.next(at)) starts.push_back(at);
+        const std::vector<std::size_t>& noted = string.known_module_starts();
+        ASSERT_FALSE(noted.empty()) << "step " << step;
+        std::size_t previous = 0;
+        for (std::size_t start : noted) {
+          ASSERT_TRUE(std::binary_search(starts.begin(), starts.end(), start))
+              << start << " is not a module's start, step " << step;
+          // Between two rules applied lie a few bytes of modules without
+          // rules at most, and no successor is longer than 64 bytes.
+          EXPECT_LT(start - previous, 100u + 64u);
+          previous = start;
+        }
+        EXPECT_LT(string.size_bytes() - previous, 100u + 64u);
+      }
+      EXPECT_GT(simulation.string().size_bytes(), 8000u);  // split into many chunks
+    }
+  }
 }
 
 // A stochastic model: what each module becomes depends on ran().

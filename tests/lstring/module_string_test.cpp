@@ -245,6 +245,21 @@ TEST_F(ModuleStringTest, KnownModuleStartsFollowTheString) {
   EXPECT_TRUE(moved.known_module_starts().empty());
 }
 
+// A pass notes where modules start as it writes, no closer together than
+// asked: P (10 bytes) at 0, Q (1 byte) at 10, R at 11.
+TEST_F(ModuleStringTest, NotedModuleStartsAreSpacedAsAsked) {
+  ModuleString s;
+  s.note_module_start(11);
+  add_p(s, 1);
+  s.note_module_start(11);  // 10 bytes after the last: not noted
+  add(s, kQ);
+  s.note_module_start(11);  // 11 bytes after: noted
+  add(s, kQ);
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0, 11}));
+  s.truncate(11);  // the module noted at 11 is gone
+  EXPECT_EQ(s.known_module_starts(), (std::vector<std::size_t>{0}));
+}
+
 TEST_F(ModuleStringTest, PrependBufferBuildsFromTheEnd) {
   ModuleString p, q;
   add_p(p, 3);
