@@ -11,6 +11,10 @@
 //       As Derive/.../fresh, on that many threads (1, 2, 4 ... up to the
 //       machine's cores): the derivation's own speed-up, without the start
 //       and end of a process.
+//   Pass/<threads>
+//       The cost of a parallel pass itself: four empty tasks per thread
+//       handed to that many threads (1, 2, 4 ... up to 16), and their end
+//       awaited.
 //   DiffusionStep
 //       diffusion.l grown to 2^21 cells (untimed), then one timed diffusion
 //       step per iteration.
@@ -56,6 +60,7 @@
 #include <unistd.h>
 
 #include "api/simulation.h"
+#include "derive/worker_threads.h"
 
 namespace {
 
@@ -155,6 +160,11 @@ void derive(benchmark::State& state, const std::string& model, int steps, bool f
   state.counters["Mmod/s_last"] = last_modules / last_seconds / 1e6;
   state.counters["Mmod/s_cpu"] = total_modules / total_cpu / 1e6;
   set_string_counters(state, d);
+}
+
+void pass_overhead(benchmark::State& state, int threads) {
+  const std::size_t tasks = static_cast<std::size_t>(threads) * 4;
+  for (auto _ : state) sylva::derive::run_tasks(threads, tasks, [](std::size_t k) { benchmark::DoNotOptimize(k); });
 }
 
 // ---- diffusion ---------------------------------------------------------------
@@ -273,6 +283,9 @@ void register_all() {
           ->UseManualTime()
           ->Iterations(m.iterations)
           ->Unit(benchmark::kMillisecond);
+  for (int threads = 1; threads <= 16; threads *= 2)
+    benchmark::RegisterBenchmark(("Pass/" + std::to_string(threads)).c_str(), pass_overhead, threads)
+        ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("DiffusionStep", diffusion_step)
       ->UseManualTime()
       ->Iterations(20)

@@ -1,10 +1,15 @@
 #include "derive/worker_threads.h"
 
+#include <pthread.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <cstdint>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include "lstring/run_limits.h"
@@ -15,7 +20,7 @@ namespace {
 
 // The stack the fault handler runs on in a helper thread (a stack overflow
 // leaves none), freed with the thread: the handler would otherwise keep one
-// of its own for the life of a thread that lives for one pass.
+// of its own for the life of the thread.
 class SignalStack {
  public:
   SignalStack() {
@@ -37,12 +42,102 @@ class SignalStack {
   std::unique_ptr<char[]> memory_{new char[kSize]};
 };
 
+// Prepares a helper thread: a fault in model code on it is reported as on
+// the caller's, and signals sent to the process (an interruption, a child's
+// end) go to the threads that were there before it.
+void prepare_helper() {
+  sigset_t asynchronous;
+  sigfillset(&asynchronous);
+  for (int fault : {SIGSEGV, SIGFPE, SIGBUS, SIGILL, SIGABRT, SIGTRAP}) sigdelset(&asynchronous, fault);
+  pthread_sigmask(SIG_BLOCK, &asynchronous, nullptr);
+  model_faults::install_handler();
+}
+
+// Helper threads kept between passes. Starting and joining fifteen threads
+// for a pass took about 0.8 ms (bench/sylva_bench, Pass/16), and a step on
+// many threads makes a few passes (the branch index, the productions, the
+// decomposition), against some milliseconds of work each. The threads wait
+// for the next pass instead. One pass uses the pool at a time; a pass that
+// finds it in use (another derivation on another thread) starts threads of
+// its own.
+class HelperPool {
+ public:
+  pid_t owner() const { return owner_; }
+
+  // Runs `work` on `helpers` threads of the pool while the caller runs it
+  // too, and returns once all have returned; false, having run nothing,
+  // when the pool is in use.
+  bool run(std::size_t helpers, const std::function<void()>& work) {
+    std::unique_lock<std::mutex> pass(in_use_, std::try_to_lock);
+    if (!pass) return false;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      while (threads_ < helpers) {
+        std::thread(&HelperPool::serve, this).detach();
+        ++threads_;
+      }
+      work_ = &work;
+      wanted_ = helpers;
+      ++pass_number_;
+    }
+    wake_.notify_all();
+    work();
+    // The tasks are all taken: a helper that has not woken yet has nothing
+    // left to do, and need not be waited for.
+    std::unique_lock<std::mutex> lock(mutex_);
+    wanted_ = 0;
+    done_.wait(lock, [&] { return working_ == 0; });
+    return true;
+  }
+
+ private:
+  void serve() {
+    SignalStack signal_stack;
+    prepare_helper();
+    std::uint64_t last_pass = 0;
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [&] { return pass_number_ != last_pass && wanted_ > 0; });
+      last_pass = pass_number_;
+      --wanted_;
+      ++working_;
+      const std::function<void()>& work = *work_;
+      lock.unlock();
+      work();
+      lock.lock();
+      if (--working_ == 0) done_.notify_all();
+    }
+  }
+
+  const pid_t owner_ = getpid();
+  std::mutex in_use_;  // held by the pass using the pool
+  std::mutex mutex_;   // guards what follows
+  std::condition_variable wake_, done_;
+  std::size_t threads_ = 0;
+  std::uint64_t pass_number_ = 0;
+  std::size_t wanted_ = 0;   // helpers the pass still asks for
+  std::size_t working_ = 0;  // helpers running the pass's work
+  const std::function<void()>* work_ = nullptr;
+};
+
+// Never destroyed: its threads wait for work until the process ends. A
+// forked process has none of its parent's threads, and makes a pool of its
+// own.
+HelperPool& helper_pool() {
+  static std::atomic<HelperPool*> pool{new HelperPool};
+  HelperPool* current = pool.load(std::memory_order_acquire);
+  if (current->owner() == getpid()) return *current;
+  auto* own = new HelperPool;
+  if (pool.compare_exchange_strong(current, own, std::memory_order_acq_rel)) return *own;
+  delete own;  // another thread of this process made one first
+  return *current;
+}
+
 }  // namespace
 
 void run_tasks(int threads, std::size_t count, const std::function<void(std::size_t)>& task) {
   std::vector<std::exception_ptr> failures(count);
   std::atomic<std::size_t> next{0};
-  RunBudget* budget = RunBudget::active();
   auto work = [&] {
     for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < count;) {
       try {
@@ -52,23 +147,29 @@ void run_tasks(int threads, std::size_t count, const std::function<void(std::siz
       }
     }
   };
-  const std::size_t helpers = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count) - 1;
-  std::vector<std::jthread> pool;
-  pool.reserve(helpers);
-  for (std::size_t t = 0; t < helpers; ++t)
-    pool.emplace_back([&] {
-      // A fault in model code on this thread is reported as on the caller's.
-      SignalStack signal_stack;
-      model_faults::install_handler();
-      if (budget) {
-        RunBudget::Scope scope(*budget);
-        work();
-      } else {
-        work();
-      }
-    });
-  work();
-  pool.clear();  // joins
+  // Helpers check the run's limits as the caller does.
+  RunBudget* budget = RunBudget::active();
+  const std::function<void()> helper_work = [&] {
+    if (!budget) return work();
+    RunBudget::Scope scope(*budget);
+    work();
+  };
+  // Threads besides the caller's: none for a single task, or none at all.
+  std::size_t helpers = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count);
+  if (helpers > 0) --helpers;
+  if (helpers == 0) {
+    work();
+  } else if (!helper_pool().run(helpers, helper_work)) {
+    std::vector<std::jthread> pool;
+    pool.reserve(helpers);
+    for (std::size_t t = 0; t < helpers; ++t)
+      pool.emplace_back([&] {
+        SignalStack signal_stack;
+        prepare_helper();
+        helper_work();
+      });
+    work();
+  }  // the threads of their own join here
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
 }
