@@ -544,7 +544,7 @@ std::size_t Derivation::forward_range(const StringView& src, std::size_t from, s
       continue;
     }
     flush();
-    out.note_module_start(known_start_spacing_);
+    out.note_module_start(known_start_spacing());
     const std::size_t start = pos;
     if (cut) {
       // Cut drops itself and the rest of its branch; the closing EB stays.
@@ -670,7 +670,7 @@ std::size_t Derivation::expand(RuleKind kind, const StringView& source, int dept
       continue;
     }
     flush();
-    out.note_module_start(known_start_spacing_);
+    out.note_module_start(known_start_spacing());
     std::size_t consumed = 0;
     if (depth >= max_depth) {
       if (apply_forward(kind, src, pos, *successor, out, false, &consumed)) {

@@ -4,6 +4,7 @@
 // the axiom and every step, and interpretation rules on demand.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -189,6 +190,10 @@ class Derivation {
   void track_lsystem(ModuleId id, const unsigned char* params);
   void track_lsystems(const StringView& src, std::size_t from, std::size_t to);
   SkipTable skip_table(const abi::Rule& rule) const;
+  // How far apart passes note module starts in what they write, for the
+  // next parallel pass to cut the string at (chunk_starts): a quarter of a
+  // chunk.
+  std::size_t known_start_spacing() const { return std::max<std::size_t>(min_chunk_bytes_ / 4, 1); }
   // Where a fault in the rule's body is reported (one per rule of the model).
   const model_faults::CallSite& rule_site(const abi::Rule& rule) const {
     return rule_sites_[static_cast<std::size_t>(&rule - model_.rules)];
@@ -348,10 +353,6 @@ class Derivation {
   ModuleString reaction_scratch_;               // where those bodies write
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
-  // How far apart passes note module starts in what they write, for the
-  // next parallel pass to cut the string at (chunk_starts): a quarter of a
-  // chunk at most.
-  std::size_t known_start_spacing_ = kMinChunkBytes / 4;
   // Each chunk's successors in a parallel pass, kept from pass to pass so
   // that their pages are faulted in once, not at every step. A cache line
   // each: threads appending to neighbouring buffers would otherwise write

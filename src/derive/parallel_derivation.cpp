@@ -72,7 +72,6 @@ std::string Derivation::parallel_explanation() const {
 void Derivation::set_threads(int threads, std::size_t min_chunk_bytes) {
   threads_ = std::max(threads, 1);
   min_chunk_bytes_ = std::max<std::size_t>(min_chunk_bytes, 1);
-  known_start_spacing_ = std::max<std::size_t>(min_chunk_bytes_ / 4, 1);
   forward_parallel_ = serial_reason(abi::RuleKind::Production).empty();
   decomposition_parallel_ = serial_reason(abi::RuleKind::Decomposition).empty();
 }
@@ -114,7 +113,7 @@ std::vector<std::size_t> Derivation::chunk_starts(const StringView& src) const {
     const std::size_t target = src.begin + bytes / chunks * c;
     if (use_known && pos < target) {
       const auto after = std::lower_bound(known.begin(), known.end(), target);
-      if (after != known.end() && *after - target < known_start_spacing_) pos = *after;
+      if (after != known.end() && *after - target < known_start_spacing()) pos = *after;
       else if (after != known.begin()) pos = std::max(pos, *std::prev(after));
     }
     while (pos < target) pos = src.next(pos);

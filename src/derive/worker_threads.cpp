@@ -1,6 +1,5 @@
 #include "derive/worker_threads.h"
 
-#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -18,9 +17,9 @@
 namespace sylva::derive {
 namespace {
 
-// The stack the fault handler runs on in a helper thread (a stack overflow
-// leaves none), freed with the thread: the handler would otherwise keep one
-// of its own for the life of the thread.
+// The stack the fault handler runs on in a thread started for one pass (a
+// stack overflow leaves none), freed with the thread: the handler would
+// otherwise keep one of its own for the life of the thread.
 class SignalStack {
  public:
   SignalStack() {
@@ -42,14 +41,11 @@ class SignalStack {
   std::unique_ptr<char[]> memory_{new char[kSize]};
 };
 
-// Prepares a helper thread: a fault in model code on it is reported as on
-// the caller's, and signals sent to the process (an interruption, a child's
-// end) go to the threads that were there before it.
+// A helper thread reports a fault in model code as the caller's thread
+// would, and leaves the process's other signals to the threads that were
+// there before it.
 void prepare_helper() {
-  sigset_t asynchronous;
-  sigfillset(&asynchronous);
-  for (int fault : {SIGSEGV, SIGFPE, SIGBUS, SIGILL, SIGABRT, SIGTRAP}) sigdelset(&asynchronous, fault);
-  pthread_sigmask(SIG_BLOCK, &asynchronous, nullptr);
+  model_faults::block_all_but_faults();
   model_faults::install_handler();
 }
 
@@ -91,8 +87,9 @@ class HelperPool {
   }
 
  private:
+  // A kept thread's signal stack is the one install_handler gives it for
+  // its life.
   void serve() {
-    SignalStack signal_stack;
     prepare_helper();
     std::uint64_t last_pass = 0;
     std::unique_lock<std::mutex> lock(mutex_);
@@ -147,29 +144,31 @@ void run_tasks(int threads, std::size_t count, const std::function<void(std::siz
       }
     }
   };
-  // Helpers check the run's limits as the caller does.
-  RunBudget* budget = RunBudget::active();
-  const std::function<void()> helper_work = [&] {
-    if (!budget) return work();
-    RunBudget::Scope scope(*budget);
-    work();
-  };
   // Threads besides the caller's: none for a single task, or none at all.
   std::size_t helpers = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count);
   if (helpers > 0) --helpers;
   if (helpers == 0) {
     work();
-  } else if (!helper_pool().run(helpers, helper_work)) {
-    std::vector<std::jthread> pool;
-    pool.reserve(helpers);
-    for (std::size_t t = 0; t < helpers; ++t)
-      pool.emplace_back([&] {
-        SignalStack signal_stack;
-        prepare_helper();
-        helper_work();
-      });
-    work();
-  }  // the threads of their own join here
+  } else {
+    // Helpers check the run's limits as the caller does.
+    RunBudget* budget = RunBudget::active();
+    const std::function<void()> helper_work = [&] {
+      if (!budget) return work();
+      RunBudget::Scope scope(*budget);
+      work();
+    };
+    if (!helper_pool().run(helpers, helper_work)) {
+      std::vector<std::jthread> own;
+      own.reserve(helpers);
+      for (std::size_t t = 0; t < helpers; ++t)
+        own.emplace_back([&] {
+          SignalStack signal_stack;
+          prepare_helper();
+          helper_work();
+        });
+      work();
+    }  // threads of its own join here
+  }
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
 }

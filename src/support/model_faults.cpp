@@ -147,6 +147,13 @@ void install_handler() {
   give_thread_a_signal_stack();
 }
 
+void block_all_but_faults() {
+  sigset_t others;
+  sigfillset(&others);
+  for (int s : kFatalSignals) sigdelset(&others, s);
+  pthread_sigmask(SIG_BLOCK, &others, nullptr);
+}
+
 void rethrow_as_model_error(const CallSite& site) {
   std::string what;
   try {

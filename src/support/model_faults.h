@@ -41,6 +41,12 @@ inline thread_local const CallSite* current_site = nullptr;
 // signal stack for the calling thread, so a stack overflow is reported too.
 void install_handler();
 
+// Blocks on the calling thread every signal but the faults the handler
+// reports: a helper thread that lives on between passes leaves the signals
+// sent to the process (an interruption, a child's end) to the threads that
+// were there before it.
+void block_all_but_faults();
+
 // The ModelError for the exception being handled, thrown by the model at `site`.
 [[noreturn]] void rethrow_as_model_error(const CallSite& site);
 
