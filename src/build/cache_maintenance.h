@@ -28,9 +28,10 @@ CacheUsage cache_usage(const ModelCache& cache);
 // library being compiled, and the leftovers of runs that were killed.
 PruneResult prune_cache(const ModelCache& cache, std::uint64_t max_bytes, const std::string& keep = {});
 
-// The same, automatically after a compile: only looks at the manifests if
-// the cache is past the limit.
-void prune_cache_if_full(const ModelCache& cache, const std::string& keep);
+// The same, automatically after a compile of `keep` that wrote `manifest`:
+// adds their files to the size last counted, and counts and prunes only if
+// that is past the limit.
+void prune_cache_if_full(const ModelCache& cache, const std::string& keep, const std::string& manifest);
 
 // Every compiled model but those being compiled now. Files in the folder
 // that are not Sylva's are left alone.

@@ -282,7 +282,7 @@ BuiltModel build_model(const std::string& model_path, const BuildOptions& option
     manifest.dependencies.push_back({file_stamp(path), path});
   }
   cache.write_file(lookup_key + ".manifest", manifest_text(manifest));
-  if (built.compiled_now) prune_cache_if_full(cache, key);
+  if (built.compiled_now) prune_cache_if_full(cache, key, lookup_key + ".manifest");
   return built;
 }
 

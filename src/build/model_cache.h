@@ -6,7 +6,8 @@
 //
 // Layout: KEY.so a compiled model (KEY: the content key of its C++, 32 hex
 // digits), KEY.sum its checksum, KEY.lock locked while KEY is compiled;
-// LOOKUP.manifest (build/cache_manifest.h) for each way a model was run.
+// LOOKUP.manifest (build/cache_manifest.h) for each way a model was run;
+// cache-size the folder's size as last counted (build/cache_maintenance.h).
 // A library's modification time is its last use.
 #pragma once
 

@@ -1,8 +1,10 @@
 // The cache is kept to a size: least recently used models go first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "build/cache_maintenance.h"
@@ -31,6 +33,12 @@ class CachePruning : public CacheTest {
     return built;
   }
   build::ModelCache cache() const { return build::ModelCache(options_.cache_dir); }
+  // The size of the cache as last counted, as runs keep it.
+  std::string tally() const {
+    std::ifstream in(options_.cache_dir + "/cache-size");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  void set_tally(const std::string& text) { std::ofstream(options_.cache_dir + "/cache-size") << text; }
 };
 
 TEST_F(CachePruning, TheLeastRecentlyUsedGoFirst) {
@@ -74,6 +82,46 @@ TEST_F(CachePruning, RunsPruneAfterCompilingPastTheLimit) {
   EXPECT_TRUE(fs::exists(c.library_path));
 }
 
+TEST_F(CachePruning, RunsAddWhatTheyCompiledToTheSizeLastCounted) {
+  const ScopedVariable limit("SYLVA_CACHE_MAX_SIZE", "300K");
+  const build::BuiltModel a = build_used("a.l", 30);
+  // The first compile counts the cache.
+  EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes) + "\n");
+  // Told the cache is empty, runs believe it: two more libraries make
+  // 300 KiB and a little more in the folder, but the tally reads less than
+  // 300 KiB and nothing goes.
+  set_tally("0\n");
+  const std::uint64_t before_b = build::cache_usage(cache()).bytes;
+  const build::BuiltModel b = build_used("b.l", 20);
+  // What b's compile wrote: library, checksum, lock and manifest.
+  const std::uint64_t b_wrote = build::cache_usage(cache()).bytes - before_b;
+  EXPECT_GE(b_wrote, kLibraryBytes);
+  EXPECT_EQ(tally(), std::to_string(b_wrote) + "\n");
+  const build::BuiltModel c = build_used("c.l", 10);
+  EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes - before_b) + "\n");
+  EXPECT_TRUE(fs::exists(a.library_path));
+  EXPECT_GT(build::cache_usage(cache()).bytes, 300u << 10);
+  // A fourth takes the tally past the limit: the cache is counted, the least
+  // recently used go, and the tally is the count of what is left.
+  write("d.l", "module d(float);\naxiom: d(1);\n");
+  build("d.l");
+  EXPECT_FALSE(fs::exists(a.library_path));
+  EXPECT_FALSE(fs::exists(b.library_path));
+  EXPECT_TRUE(fs::exists(c.library_path));
+  EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes) + "\n");
+}
+
+TEST_F(CachePruning, AnUnreadableTallyIsCountedAgain) {
+  build("a.l");
+  int step = 1;
+  for (const char* text : {"", "lots\n", "12", "-5\n", " 7\n"}) {
+    set_tally(text);
+    edit("step.h", "#define STEP " + std::to_string(++step) + "\n");
+    EXPECT_TRUE(build().compiled_now);
+    EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes) + "\n") << "'" << text << "'";
+  }
+}
+
 TEST_F(CachePruning, ClearRemovesEveryModelAndOnlySylvasFiles) {
   build("a.l");
   build("b.l");
@@ -91,7 +139,9 @@ TEST_F(CachePruning, ClearRemovesEveryModelAndOnlySylvasFiles) {
   EXPECT_EQ(result.left.bytes, 0u);
   std::vector<std::string> left;
   for (const auto& entry : fs::directory_iterator(options_.cache_dir)) left.push_back(entry.path().filename());
-  EXPECT_EQ(left, std::vector<std::string>{"notes.txt"});
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"cache-size", "notes.txt"}));
+  EXPECT_EQ(tally(), "0\n");
 }
 
 TEST(CacheSizes, ReadAndWritten) {
