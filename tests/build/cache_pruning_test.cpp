@@ -6,6 +6,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "build/cache_maintenance.h"
 #include "build/cache_test_support.h"
@@ -108,6 +110,19 @@ TEST_F(CachePruning, RunsAddWhatTheyCompiledToTheSizeLastCounted) {
   EXPECT_FALSE(fs::exists(a.library_path));
   EXPECT_FALSE(fs::exists(b.library_path));
   EXPECT_TRUE(fs::exists(c.library_path));
+  EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes) + "\n");
+}
+
+TEST_F(CachePruning, RunsCompilingAtOnceEachAddTheirShare) {
+  build("a.l");  // the first compile counts
+  options_.compiler = stand_in("big_slow", stand_in_script("sleep 0.3; head -c 102400 /dev/zero > \"$out\""));
+  std::vector<std::thread> runs;
+  for (const char* name : {"b", "c", "d", "e"}) {
+    write(std::string(name) + "2.l", "module " + std::string(name) + "(float);\naxiom: " + name + "(2);\n");
+    runs.emplace_back([this, name] { build(std::string(name) + "2.l"); });
+  }
+  for (std::thread& run : runs) run.join();
+  EXPECT_EQ(build::cache_usage(cache()).models, 5);
   EXPECT_EQ(tally(), std::to_string(build::cache_usage(cache()).bytes) + "\n");
 }
 
