@@ -90,9 +90,9 @@ std::uint64_t file_bytes(const fs::path& path) {
 // The cache's size as last counted, in a file of its own (its name is not a
 // key's, so counting passes it by), locked while it is read and written.
 // A run that compiles adds what it wrote instead of counting every file:
-// with 1300 models in the cache the count took 20-30 ms after each compile,
-// and a cache at its limit holds twenty times as many. Files removed by hand
-// make it too high, so the cache is pruned early, and that corrects it.
+// with 24 000 models in the cache (near the default limit) the count took
+// 0.47 s of each compiling run. Files removed by hand make the tally too
+// high, so the cache is pruned early, and the count then corrects it.
 class SizeTally {
  public:
   explicit SizeTally(const ModelCache& cache)

@@ -122,7 +122,8 @@ std::vector<std::size_t> Derivation::chunk_starts(const StringView& src) const {
   std::vector<std::size_t> starts{src.begin};
   std::size_t pos = src.begin;
   for (std::size_t c = 1; c < chunks; ++c) {
-    const std::size_t target = src.begin + static_cast<std::size_t>(static_cast<double>(bytes) * cut_fraction(c, chunks));
+    const std::size_t target =
+        src.begin + static_cast<std::size_t>(static_cast<double>(bytes) * cut_fraction(c, chunks));
     if (use_known && pos < target) {
       const auto after = std::lower_bound(known.begin(), known.end(), target);
       if (after != known.end() && *after - target < known_start_spacing()) pos = *after;
