@@ -61,9 +61,13 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
     }
   });
   const std::size_t brackets = count_marks();
-  if (brackets > partner_room_) {
-    partners_.reset(new std::size_t[brackets]);
-    partner_room_ = brackets;
+  wide_ = s.end >= std::min<std::size_t>(narrow_below_, kNarrowUnmatched);
+  if (wide_ && brackets > wide_room_) {
+    wide_partners_.reset(new std::size_t[brackets]);
+    wide_room_ = brackets;
+  } else if (!wide_ && brackets > narrow_room_) {
+    narrow_partners_.reset(new std::uint32_t[brackets]);
+    narrow_room_ = brackets;
   }
   struct Bracket {
     std::size_t rank, offset;
@@ -87,8 +91,8 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
         } else if (open.empty()) {
           loose[p].closing_earlier.push_back({r, at});
         } else {
-          partners_[open.back().rank] = at;
-          partners_[r] = open.back().offset;
+          set_partner(open.back().rank, at);
+          set_partner(r, open.back().offset);
           open.pop_back();
         }
       }
@@ -98,16 +102,16 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
   for (const Loose& part : loose) {
     for (const Bracket& eb : part.closing_earlier) {
       if (open.empty()) {
-        partners_[eb.rank] = kUnmatched;
+        set_partner(eb.rank, kUnmatched);
         continue;
       }
-      partners_[open.back().rank] = eb.offset;
-      partners_[eb.rank] = open.back().offset;
+      set_partner(open.back().rank, eb.offset);
+      set_partner(eb.rank, open.back().offset);
       open.pop_back();
     }
     open.insert(open.end(), part.open.begin(), part.open.end());
   }
-  for (const Bracket& sb : open) partners_[sb.rank] = kUnmatched;
+  for (const Bracket& sb : open) set_partner(sb.rank, kUnmatched);
   built_.store(true, std::memory_order_release);
 }
 

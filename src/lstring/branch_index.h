@@ -45,6 +45,9 @@ class BranchPartners {
 
 class BranchIndex final : public BranchPartners {
  public:
+  // Partners are kept in 4 bytes for strings shorter than `narrow_below`
+  // bytes (at most 4 GiB, the default), in 8 for longer ones.
+  explicit BranchIndex(std::size_t narrow_below = kNarrowUnmatched) : narrow_below_(narrow_below) {}
 
   // The string to index on first use, from begin to end (`string.ring` is
   // ignored); it must not change while the index is in use. Not to be
@@ -68,11 +71,20 @@ class BranchIndex final : public BranchPartners {
   // call from several threads at once.
   std::size_t partner(std::size_t bracket) const {
     if (!built_.load(std::memory_order_acquire)) build();
-    return partners_[rank(bracket)];
+    const std::size_t r = rank(bracket);
+    if (wide_) return wide_partners_[r];
+    const std::uint32_t narrow = narrow_partners_[r];
+    return narrow == kNarrowUnmatched ? kUnmatched : narrow;
   }
 
  private:
   static constexpr int kSuperblockBits = 20;  // words per superblock: 2^20 (64 MiB of string)
+  static constexpr std::uint32_t kNarrowUnmatched = ~std::uint32_t{0};
+
+  void set_partner(std::size_t rank, std::size_t offset) const {
+    if (wide_) wide_partners_[rank] = offset;
+    else narrow_partners_[rank] = offset == kUnmatched ? kNarrowUnmatched : static_cast<std::uint32_t>(offset);
+  }
 
   std::size_t rank(std::size_t bracket) const {
     const std::size_t word = bracket >> 6;
@@ -108,8 +120,14 @@ class BranchIndex final : public BranchPartners {
   mutable std::size_t mark_words_ = 0, mark_room_ = 0;
   mutable std::vector<std::uint32_t> counts_;             // brackets before word w within its superblock
   mutable std::vector<std::size_t> superblock_counts_;    // brackets before each superblock
-  mutable std::unique_ptr<std::size_t[]> partners_;      // by rank; room for partner_room_
-  mutable std::size_t partner_room_ = 0;
+  // Partners by rank, in 4 bytes while every offset fits, else in 8: pairing
+  // writes half as much, and the index of a long string takes half the
+  // memory.
+  std::size_t narrow_below_;
+  mutable bool wide_ = false;
+  mutable std::unique_ptr<std::uint32_t[]> narrow_partners_;
+  mutable std::unique_ptr<std::size_t[]> wide_partners_;
+  mutable std::size_t narrow_room_ = 0, wide_room_ = 0;
 };
 
 }  // namespace sylva

@@ -351,18 +351,23 @@ TEST_F(ContextMatcherTest, BracketsCountEvenWhenFiltered) {
 
 // Partners worked by hand: offsets are 8 bytes for A(int) and B(int) ([id]
 // [int][id]), 2 for C, [ and ].
+// Both ways of keeping partners: in 4 bytes (strings under 4 GiB) and in 8.
+constexpr std::size_t kNarrow = std::size_t{1} << 32, kWide = 0;
+
 TEST_F(ContextMatcherTest, BranchIndexPairsEachBracketWithItsPartner) {
-  ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 6, B 7, [ 13, C 14, ] 15, ] 16, C 17
-  BranchIndex index;
-  index.prepare(s.view(types_));
-  EXPECT_EQ(index.partner(6), 16u);
-  EXPECT_EQ(index.partner(13), 15u);
-  EXPECT_EQ(index.partner(15), 13u);
-  EXPECT_EQ(index.partner(16), 6u);
-  ModuleString stray = parse("] C [ C");  // ] 0, C 1, [ 2, C 3
-  index.prepare(stray.view(types_));
-  EXPECT_EQ(index.partner(0), BranchIndex::kUnmatched);
-  EXPECT_EQ(index.partner(2), BranchIndex::kUnmatched);
+  for (std::size_t narrow_below : {kNarrow, kWide}) {
+    ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 6, B 7, [ 13, C 14, ] 15, ] 16, C 17
+    BranchIndex index(narrow_below);
+    index.prepare(s.view(types_));
+    EXPECT_EQ(index.partner(6), 16u);
+    EXPECT_EQ(index.partner(13), 15u);
+    EXPECT_EQ(index.partner(15), 13u);
+    EXPECT_EQ(index.partner(16), 6u);
+    ModuleString stray = parse("] C [ C");  // ] 0, C 1, [ 2, C 3
+    index.prepare(stray.view(types_));
+    EXPECT_EQ(index.partner(0), BranchIndex::kUnmatched);
+    EXPECT_EQ(index.partner(2), BranchIndex::kUnmatched);
+  }
 }
 
 // Skips and matches through the index give what walking the string gives,
@@ -463,13 +468,16 @@ TEST_F(ContextMatcherTest, BranchIndexBuiltInPartsPairsAsBuiltWhole) {
     for (std::size_t k = 1; k < count; ++k) parts.push_back(starts[random() % starts.size()]);
     std::sort(parts.begin(), parts.end());
     parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
-    BranchIndex in_parts;
-    in_parts.prepare(v);
-    in_parts.build_in_parts(parts, [](std::size_t n, const std::function<void(std::size_t)>& task) {
-      for (std::size_t k = n; k-- > 0;) task(k);  // any order
-    });
-    ASSERT_TRUE(in_parts.built());
-    for (std::size_t b : brackets) ASSERT_EQ(in_parts.partner(b), whole.partner(b)) << count << " parts, at " << b;
+    for (std::size_t narrow_below : {kNarrow, kWide}) {
+      BranchIndex in_parts(narrow_below);
+      in_parts.prepare(v);
+      in_parts.build_in_parts(parts, [](std::size_t n, const std::function<void(std::size_t)>& task) {
+        for (std::size_t k = n; k-- > 0;) task(k);  // any order
+      });
+      ASSERT_TRUE(in_parts.built());
+      for (std::size_t b : brackets)
+        ASSERT_EQ(in_parts.partner(b), whole.partner(b)) << count << " parts, at " << b << ", " << narrow_below;
+    }
   }
 }
 
