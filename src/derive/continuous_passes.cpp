@@ -139,7 +139,7 @@ std::size_t Derivation::fire_events() {
     }
     flush();
   }
-  std::swap(string_, next_);
+  swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
   decompose();
   map_state();

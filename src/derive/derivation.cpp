@@ -261,7 +261,7 @@ void Derivation::apply_productions() {
     }
   }
   note_growth(growth_);
-  std::swap(string_, next_);
+  swap(string_, next_);
   ++steps_done_;
   c.step = steps_done_;
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
@@ -284,7 +284,7 @@ void Derivation::decompose() {
   if (!decompose_in_parallel(depth)) expand(RuleKind::Decomposition, current_view(), 0, depth, next_, expansion_);
   note_growth(decomposition_growth_);
   release_deep_expansion();
-  std::swap(string_, next_);
+  swap(string_, next_);
   update_births(next_, static_cast<std::uint32_t>(steps_done_));
 }
 
@@ -684,7 +684,7 @@ std::size_t Derivation::expand(RuleKind kind, const StringView& source, int dept
           // The level ends with this successor: it is replaced rather than
           // kept waiting, so a chain of last modules (A --> B A) takes no
           // more memory however deep it goes.
-          std::swap(scratch[frames.size()], *successor);
+          swap(scratch[frames.size()], *successor);
         } else {
           frames.push_back(ExpansionFrame{src, pos, consumed, out.size_bytes(), depth, keyed_random::key.level});
         }

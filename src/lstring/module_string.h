@@ -71,6 +71,13 @@ class ModuleString {
   ModuleString& operator=(ModuleString&& other) noexcept;
   ModuleString(const ModuleString&) = delete;
   ModuleString& operator=(const ModuleString&) = delete;
+  // Exchanges buffers and notes: what three moves would do, without their
+  // releasing and resetting. Decomposition swaps a level's successor into
+  // place once per chain it expands, which made the moves 5% of a run.
+  friend void swap(ModuleString& a, ModuleString& b) noexcept {
+    std::swap(a.buffer_, b.buffer_);
+    a.known_starts_.swap(b.known_starts_);
+  }
 
   const unsigned char* data() const { return buffer_.data; }
   // For writing parameters in place (answers to query and communication modules).

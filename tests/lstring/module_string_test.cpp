@@ -197,6 +197,33 @@ TEST_F(ModuleStringTest, MovesAssignsAndTruncates) {
   EXPECT_TRUE(copy.empty());
 }
 
+// Swapped, two strings exchange modules, known starts, and where they
+// write: a window stays a window, and each goes on growing where it is.
+TEST_F(ModuleStringTest, SwapsExchangeEverything) {
+  ModuleString whole;
+  whole.reserve_unwritten(2 << 20);
+  ModuleString window, own = sample();  // own: P 0, Q 10, R 11, [ 25, Q 26, ] 27, P 28
+  own.set_known_module_starts({0, 11});
+  window.write_into(whole.data_for_writing(), 4096);
+  add(window, kQ);
+  const unsigned char* own_data = own.data();
+  swap(window, own);
+  EXPECT_EQ(window.data(), own_data);
+  EXPECT_FALSE(window.writes_in_window());
+  EXPECT_EQ(window.known_module_starts(), (std::vector<std::size_t>{0, 11}));
+  EXPECT_EQ(forward_ids(window.view(types_)), forward_ids(sample().view(types_)));
+  EXPECT_TRUE(own.writes_in_window());
+  EXPECT_EQ(own.data(), whole.data());
+  EXPECT_TRUE(own.known_module_starts().empty());
+  EXPECT_EQ(forward_ids(own.view(types_)), std::vector<ModuleId>{kQ});
+  add(own, kQ);
+  EXPECT_TRUE(own.writes_in_window());
+  EXPECT_EQ(own.data(), whole.data());
+  for (int k = 0; k < 420; ++k) add_p(own, k);  // past the window: spills
+  EXPECT_FALSE(own.writes_in_window());
+  EXPECT_EQ(own.count_modules(types_), 422u);
+}
+
 // A string written in place through windows of another's buffer (a
 // parallel pass's chunks): what each writes lands at its window; one that
 // outgrows its window goes on in a buffer of its own, keeping what it had;
