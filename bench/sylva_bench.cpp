@@ -276,28 +276,21 @@ void register_all() {
           ->Unit(benchmark::kMillisecond);
     }
   }
-  // Speed-up with threads: a context-free model and an ordinary-context one.
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (const Derived& m : {derived[0], derived[3]})
-    for (int threads = 1; threads <= cores; threads *= 2)
-      benchmark::RegisterBenchmark(
-          ("Threads/" + std::string(m.model) + "/" + std::to_string(m.steps) + "/" + std::to_string(threads)).c_str(),
-          derive, std::string(m.model), m.steps, true, threads)
-          ->UseManualTime()
-          ->Iterations(m.iterations)
-          ->Unit(benchmark::kMillisecond);
-  // The same with the buffers of the last iteration: the speed-up without
+  // Speed-up with threads: a context-free model and an ordinary-context one;
+  // `reused`, with the buffers of the last iteration: the speed-up without
   // faulting in fresh pages, which on virtual machines scales worse than the
   // rewriting does.
-  for (const Derived& m : {derived[0], derived[3]})
-    for (int threads = 1; threads <= cores; threads *= 2)
-      benchmark::RegisterBenchmark(("Threads/" + std::string(m.model) + "/" + std::to_string(m.steps) + "/" +
-                                    std::to_string(threads) + "/reused")
-                                       .c_str(),
-                                   derive, std::string(m.model), m.steps, false, threads)
-          ->UseManualTime()
-          ->Iterations(m.iterations)
-          ->Unit(benchmark::kMillisecond);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (bool fresh : {true, false})
+    for (const Derived& m : {derived[0], derived[3]})
+      for (int threads = 1; threads <= cores; threads *= 2)
+        benchmark::RegisterBenchmark(("Threads/" + std::string(m.model) + "/" + std::to_string(m.steps) + "/" +
+                                      std::to_string(threads) + (fresh ? "" : "/reused"))
+                                         .c_str(),
+                                     derive, std::string(m.model), m.steps, fresh, threads)
+            ->UseManualTime()
+            ->Iterations(m.iterations)
+            ->Unit(benchmark::kMillisecond);
   for (int threads = 1; threads <= 16; threads *= 2)
     benchmark::RegisterBenchmark(("Pass/" + std::to_string(threads)).c_str(), pass_overhead, threads)
         ->Unit(benchmark::kMicrosecond);

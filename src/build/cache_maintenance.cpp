@@ -33,6 +33,9 @@ constexpr std::uint64_t kDefaultLimit = std::uint64_t{1} << 30;
 constexpr std::chrono::hours kAbandonedAfter{1};
 
 // A compiled model's files: KEY.so, KEY.sum, KEY.lock.
+constexpr const char* kKeyFiles[] = {".so", ".sum", ".lock"};
+
+// What the folder holds of one key.
 struct Entry {
   std::uint64_t bytes = 0;
   bool has_library = false;
@@ -131,9 +134,8 @@ class SizeTally {
 };
 
 std::uint64_t remove_file(const fs::path& path) {
-  struct stat st;
-  if (::lstat(path.c_str(), &st) != 0 || ::unlink(path.c_str()) != 0) return 0;
-  return static_cast<std::uint64_t>(st.st_size);
+  const std::uint64_t bytes = file_bytes(path);
+  return ::unlink(path.c_str()) == 0 ? bytes : 0;
 }
 
 PruneResult prune(const ModelCache& cache, std::uint64_t max_bytes, const std::string& keep, bool always_tidy) {
@@ -153,7 +155,7 @@ PruneResult prune(const ModelCache& cache, std::uint64_t max_bytes, const std::s
     // A library being compiled, or looked at before it is loaded, stays.
     const std::optional<ModelCache::Lock> lock = cache.try_lock(key);
     if (!lock) continue;
-    for (const char* extension : {".so", ".sum", ".lock"}) result.bytes_removed += remove_file(cache.file(key + extension));
+    for (const char* extension : kKeyFiles) result.bytes_removed += remove_file(cache.file(key + extension));
     if (entry.has_library) {
       ++result.models_removed;
       removed_library = true;
@@ -195,7 +197,7 @@ void prune_cache_if_full(const ModelCache& cache, const std::string& keep, const
   SizeTally tally(cache);
   std::optional<std::uint64_t> bytes = tally.bytes();
   if (bytes) {
-    for (const char* extension : {".so", ".sum", ".lock"}) *bytes += file_bytes(cache.file(keep + extension));
+    for (const char* extension : kKeyFiles) *bytes += file_bytes(cache.file(keep + extension));
     *bytes += file_bytes(cache.file(manifest));
   } else {
     bytes = cache_usage(cache).bytes;
