@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -83,6 +84,19 @@ std::string write_temp_file(const std::string& folder, const std::string& file_n
   const std::string path = make_temp_dir(folder) + "/" + file_name;
   std::ofstream(path) << text;
   return path;
+}
+
+bool kernel_populates_pages() {
+#ifdef MADV_POPULATE_WRITE
+  const std::size_t page = 4096;
+  void* probe = mmap(nullptr, page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (probe == MAP_FAILED) return false;
+  const bool populated = madvise(probe, page, MADV_POPULATE_WRITE) == 0;
+  munmap(probe, page);
+  return populated;
+#else
+  return false;
+#endif
 }
 
 }  // namespace sylva::test

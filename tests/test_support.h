@@ -34,4 +34,8 @@ std::string make_temp_dir(const std::string& name);
 // `folder`; returns the file's path.
 std::string write_temp_file(const std::string& folder, const std::string& file_name, const std::string& text);
 
+// Whether this kernel faults in a stretch of pages with one call
+// (MADV_POPULATE_WRITE, Linux 5.14): without it pages fault in one by one.
+bool kernel_populates_pages();
+
 }  // namespace sylva::test

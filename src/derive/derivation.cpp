@@ -123,14 +123,15 @@ StringView Derivation::current_view() const {
   return v;
 }
 
-void Derivation::note_growth(double& growth) const {
+void Derivation::note_growth(Growth& growth) const {
   // Capped: a step that grew a tiny string into a big one (an axiom that
   // sets up a whole field) says nothing about the next step, and the
   // reservation it would ask for can exceed memory. The buffer grows by
   // itself past the reservation.
-  if (string_.size_bytes() > 0)
-    growth = std::clamp(static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()), 1.0,
-                        kMaxGrowthReserved);
+  if (string_.size_bytes() == 0) return;
+  std::copy_backward(growth.recent.begin(), growth.recent.end() - 1, growth.recent.end());
+  growth.recent[0] = std::clamp(static_cast<double>(next_.size_bytes()) / static_cast<double>(string_.size_bytes()),
+                                1.0, kMaxGrowthReserved);
 }
 
 void Derivation::index_branches() {
@@ -517,7 +518,7 @@ void Derivation::derive_forward() {
 std::size_t Derivation::affordable_reserve(std::size_t source_bytes) const {
   // Near the run's memory limit only what is affordable: the limit is
   // reached by what the step writes, not by what it might.
-  const auto expected = static_cast<std::size_t>(static_cast<double>(source_bytes) * growth_ * 1.05) + 256;
+  const auto expected = static_cast<std::size_t>(static_cast<double>(source_bytes) * growth_.last() * 1.05) + 256;
   const RunBudget* budget = RunBudget::active();
   return budget ? budget->affordable(expected) : expected;
 }

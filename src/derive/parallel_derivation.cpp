@@ -145,7 +145,7 @@ bool Derivation::derive_forward_in_parallel() {
     branches_.build_in_parts(starts, [&](std::size_t n, const std::function<void(std::size_t)>& task) {
       run_tasks(threads_, n, task);
     });
-  run_in_chunks(src, starts, growth_, [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
+  run_in_chunks(src, starts, growth_.highest(), [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
     return forward_range(src, from, to, out);
   });
   return true;
@@ -157,7 +157,8 @@ bool Derivation::decompose_in_parallel(int max_depth) {
   const std::vector<std::size_t> starts = chunk_starts(src);
   if (starts.size() < 2) return false;
   std::vector<Expansion> expansions(starts.size());
-  run_in_chunks(src, starts, decomposition_growth_, [&](std::size_t c, std::size_t from, std::size_t to, ModuleString& out) {
+  const double growth = decomposition_growth_.highest();
+  run_in_chunks(src, starts, growth, [&](std::size_t c, std::size_t from, std::size_t to, ModuleString& out) {
     Expansion& expansion = expansions[c];
     expansion.defer_warnings = true;
     expansion.depth_reached.clear();
@@ -190,6 +191,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
     window[c + 1] = window[c] + (static_cast<std::size_t>(room) + kPage - 1) / kPage * kPage;
   }
   next_.reserve_unwritten(window[n]);
+  const std::size_t ready = next_.ready_bytes();  // faulted in by earlier passes
   if (chunk_out_.size() < n) chunk_out_.resize(n);
   struct Chunk {
     ModuleString& out;
@@ -199,7 +201,8 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   std::vector<Chunk> chunks;
   chunks.reserve(n);
   for (std::size_t c = 0; c < n; ++c) {
-    chunk_out_[c].string.write_into(next_.data_for_writing() + window[c], window[c + 1] - window[c]);
+    chunk_out_[c].string.write_into(next_.data_for_writing() + window[c], window[c + 1] - window[c],
+                                    ready > window[c] ? ready - window[c] : 0);
     chunks.push_back(Chunk{chunk_out_[c].string});
   }
   auto rewrite = [&](std::size_t c, std::size_t from) {
@@ -224,6 +227,14 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   std::vector<bool> done(n, false);
   std::size_t joined = 0;  // parts [0, joined) are in place
   bool a_thread_joins = false;
+  // Where a part moves to outside the pages its chunk faulted in: faulted
+  // in with one call, as growing strings are, not page by page by the move.
+  auto fault_in_destination = [&](std::size_t c) {
+    const ModuleString& part = chunks[c].out;
+    const std::size_t own_end = window[c] + (part.writes_in_window() ? part.ready_bytes() : 0);
+    if (place[c] < window[c]) next_.fault_in(place[c], std::min(place[c + 1], window[c]));
+    if (place[c + 1] > own_end) next_.fault_in(std::max(place[c], own_end), place[c + 1]);
+  };
   auto joins_early = [&](std::size_t c) {
     return !chunks[c].failure && chunks[c].out.writes_in_window() && (c == 0 || chunks[c - 1].reached == starts[c]);
   };
@@ -237,6 +248,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
       const std::size_t size = chunks[j].out.size_bytes();
       place[j + 1] = place[j] + size;
       lock.unlock();
+      fault_in_destination(j);
       if (size && place[j] != window[j]) std::memmove(data + place[j], data + window[j], size);
       lock.lock();
       joined = j + 1;
@@ -275,6 +287,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   // their windows. Each then writes over nothing that has yet to move.
   data = next_.data_for_writing();
   auto move = [&](std::size_t c) {
+    fault_in_destination(c);
     const ModuleString& part = chunks[c].out;
     const unsigned char* from = part.writes_in_window() ? data + window[c] : part.data();
     if (part.size_bytes() && from != data + place[c]) std::memmove(data + place[c], from, part.size_bytes());
@@ -285,7 +298,12 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
     if (chunks[c].out.writes_in_window() && place[c] > window[c]) move(c);
   for (std::size_t c = joined; c < n; ++c)
     if (!chunks[c].out.writes_in_window()) move(c);
-  next_.set_written_size(total);
+  // Where the pages faulted in end now: past the windows the chunks filled
+  // in order from there.
+  std::size_t faulted = ready;
+  for (std::size_t c = 0; c < n && window[c] <= faulted; ++c)
+    if (chunks[c].out.writes_in_window()) faulted = std::max(faulted, window[c] + chunks[c].out.ready_bytes());
+  next_.set_written_size(total, faulted);
   // The starts the chunks noted, and where they joined, for the next pass.
   std::vector<std::size_t> known;
   for (std::size_t c = 0; c < n; ++c) {

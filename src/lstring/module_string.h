@@ -114,12 +114,20 @@ class ModuleString {
   // kept, and may move (they are at the same offsets from data()).
   void reserve_unwritten_keeping(std::size_t bytes);
   // From now on this string (emptied) writes into the `room` bytes at
-  // `window`, a page boundary in another string's buffer; past them it moves
-  // what it has into a buffer of its own and goes on there.
-  void write_into(unsigned char* window, std::size_t room);
+  // `window`, a page boundary in another string's buffer, the first `ready`
+  // of them faulted in already; past them it moves what it has into a buffer
+  // of its own and goes on there.
+  void write_into(unsigned char* window, std::size_t room, std::size_t ready);
   bool writes_in_window() const { return buffer_.lent; }
-  // The first `size` bytes were written through windows.
-  void set_written_size(std::size_t size);
+  // Bytes the string can take before its buffer grows: in a mapped buffer or
+  // a window of one, where the pages faulted in end.
+  std::size_t ready_bytes() const { return buffer_.capacity; }
+  // Faults in at once the pages of bytes [from, to) of a mapped buffer
+  // (see grow_buffer), before parts of the string move there.
+  void fault_in(std::size_t from, std::size_t to);
+  // The first `size` bytes were written through windows, and the pages of
+  // the first `ready` are faulted in.
+  void set_written_size(std::size_t size, std::size_t ready);
 
   // Offsets known to start modules, in order, or none: some of the starts a
   // pass noted as it wrote the string, and where a parallel pass joined its

@@ -204,7 +204,7 @@ TEST_F(ModuleStringTest, SwapsExchangeEverything) {
   whole.reserve_unwritten(2 << 20);
   ModuleString window, own = sample();  // own: P 0, Q 10, R 11, [ 25, Q 26, ] 27, P 28
   own.set_known_module_starts({0, 11});
-  window.write_into(whole.data_for_writing(), 4096);
+  window.write_into(whole.data_for_writing(), 4096, 0);
   add(window, kQ);
   const unsigned char* own_data = own.data();
   swap(window, own);
@@ -232,8 +232,8 @@ TEST_F(ModuleStringTest, WindowsWriteInPlaceAndSpillWhenFull) {
   ModuleString whole;
   whole.reserve_unwritten(2 << 20);
   ModuleString first, second;
-  first.write_into(whole.data_for_writing(), 4096);
-  second.write_into(whole.data_for_writing() + 4096, 4096);
+  first.write_into(whole.data_for_writing(), 4096, 0);
+  second.write_into(whole.data_for_writing() + 4096, 4096, 0);
   add_p(first, 1.5);
   add_r(second, 1, 2, 3);
   EXPECT_TRUE(first.writes_in_window());
@@ -250,7 +250,7 @@ TEST_F(ModuleStringTest, WindowsWriteInPlaceAndSpillWhenFull) {
   whole.reserve_unwritten_keeping(64 << 20);
   std::memcpy(&value, module_params(whole.data(), 0), sizeof value);
   EXPECT_EQ(value, 1.5);
-  whole.set_written_size(10);
+  whole.set_written_size(10, 0);
   EXPECT_EQ(forward_ids(whole.view(types_)), std::vector<ModuleId>{kP});
 }
 

@@ -1,0 +1,111 @@
+// Where a large string's pages are faulted in: with one call for a stretch,
+// never page by page as the bytes are written (a page fault traps to the
+// hypervisor on a virtual machine), and never twice. Checked with mincore,
+// which says which pages of a mapping are in memory.
+#include <gtest/gtest.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "lstring/module_string.h"
+#include "test_support.h"
+
+namespace sylva::test {
+namespace {
+
+constexpr std::size_t kPage = 4096;
+
+// Whether each page of [at, at + bytes) is in memory.
+std::vector<bool> resident(const unsigned char* at, std::size_t bytes) {
+  std::vector<unsigned char> in((bytes + kPage - 1) / kPage);
+  EXPECT_EQ(mincore(const_cast<unsigned char*>(at), bytes, in.data()), 0);
+  std::vector<bool> pages;
+  for (unsigned char page : in) pages.push_back(page & 1);
+  return pages;
+}
+
+std::size_t count(const std::vector<bool>& pages) {
+  std::size_t n = 0;
+  for (bool page : pages) n += page;
+  return n;
+}
+
+// Appends `bytes` bytes of parameterless modules (id 0, one byte each).
+void append_bytes(ModuleString& s, std::size_t bytes) {
+  for (std::size_t i = 0; i < bytes; ++i) s.append_module(0, nullptr, 0);
+}
+
+class ModuleStringPages : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!kernel_populates_pages()) GTEST_SKIP() << "this kernel cannot fault in a stretch of pages at once";
+    whole_.reserve_unwritten(8 << 20);  // a mapped buffer, nothing faulted in
+    ASSERT_EQ(reinterpret_cast<std::uintptr_t>(whole_.data()) % kPage, 0u);
+    ASSERT_EQ(count(resident(whole_.data(), 8 << 20)), 0u);
+  }
+  ModuleString whole_;
+};
+
+// A window of 64 KiB, too small to be a mapped buffer of its own, is still
+// part of one: its first module faults in all of it.
+TEST_F(ModuleStringPages, AWindowFaultsInItsPagesAtOnce) {
+  ModuleString window;
+  window.write_into(whole_.data_for_writing() + 16 * kPage, 16 * kPage, 0);
+  append_bytes(window, 1);
+  EXPECT_EQ(window.ready_bytes(), 16 * kPage);
+  const std::vector<bool> pages = resident(whole_.data(), 40 * kPage);
+  for (std::size_t p = 0; p < pages.size(); ++p) EXPECT_EQ(pages[p], p >= 16 && p < 32) << "page " << p;
+}
+
+// Pages the buffer's earlier passes faulted in are not faulted in again:
+// the window writes into them without growing.
+TEST_F(ModuleStringPages, AWindowWritesIntoPagesFaultedInBeforeWithoutGrowing) {
+  ModuleString window;
+  window.write_into(whole_.data_for_writing(), 16 * kPage, 2 * kPage);
+  EXPECT_EQ(window.ready_bytes(), 2 * kPage);
+  append_bytes(window, 2 * kPage);  // grows only at the next byte
+  EXPECT_EQ(window.ready_bytes(), 2 * kPage);
+  append_bytes(window, 1);
+  EXPECT_EQ(window.ready_bytes(), 16 * kPage);
+  // More than it holds: the room it was lent.
+  ModuleString small;
+  small.write_into(whole_.data_for_writing() + 16 * kPage, kPage, 5 * kPage);
+  EXPECT_EQ(small.ready_bytes(), kPage);
+}
+
+TEST_F(ModuleStringPages, AStretchIsFaultedInOnAsking) {
+  whole_.fault_in(3 * kPage + 100, 6 * kPage);  // from the page holding its first byte
+  const std::vector<bool> pages = resident(whole_.data(), 10 * kPage);
+  for (std::size_t p = 0; p < pages.size(); ++p) EXPECT_EQ(pages[p], p >= 3 && p < 6) << "page " << p;
+  whole_.fault_in(6 * kPage, 200 << 20);  // not past the buffer
+  EXPECT_EQ(count(resident(whole_.data(), 8 << 20)), (8 << 20) / kPage - 3);
+}
+
+// After a parallel pass the string knows how far its pages are in: as far
+// as its windows faulted them in, or as it was written, and no further than
+// its buffer goes.
+TEST_F(ModuleStringPages, AStringWrittenThroughWindowsKnowsWhereItsPagesEnd) {
+  whole_.set_written_size(100, 5 * kPage);
+  EXPECT_EQ(whole_.ready_bytes(), 5 * kPage);
+  whole_.set_written_size(7 * kPage + 1, 5 * kPage);
+  EXPECT_EQ(whole_.ready_bytes(), 8 * kPage);
+  whole_.set_written_size(10, 64 << 20);  // the buffer: 8 MiB and room to grow
+  EXPECT_GE(whole_.ready_bytes(), std::size_t{8} << 20);
+  EXPECT_LT(whole_.ready_bytes(), std::size_t{64} << 20);
+}
+
+// A buffer that becomes a mapped one faults in only what it kept: nothing,
+// for a string about to be written through windows.
+TEST(ModuleStringPagesOfNewBuffer, NoneAreInWhenAStringMovesToAMappedBuffer) {
+  ModuleString s;
+  append_bytes(s, 1000);  // a small buffer, all of it ready
+  EXPECT_GE(s.ready_bytes(), 1000u);
+  s.reserve_unwritten(4 << 20);
+  EXPECT_EQ(s.ready_bytes(), 0u);
+}
+
+}  // namespace
+}  // namespace sylva::test
