@@ -44,6 +44,8 @@ class ModuleStringPages : public ::testing::Test {
     if (!kernel_populates_pages()) GTEST_SKIP() << "this kernel cannot fault in a stretch of pages at once";
     whole_.reserve_unwritten(8 << 20);  // a mapped buffer, nothing faulted in
     ASSERT_EQ(reinterpret_cast<std::uintptr_t>(whole_.data()) % kPage, 0u);
+    // Page by page, where the system would otherwise fault in huge pages.
+    madvise(whole_.data_for_writing(), 8 << 20, MADV_NOHUGEPAGE);
     ASSERT_EQ(count(resident(whole_.data(), 8 << 20)), 0u);
   }
   ModuleString whole_;
