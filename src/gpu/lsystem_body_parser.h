@@ -122,6 +122,7 @@ class BodyParser {
   int field_index(const Token& member, Type t) const;
   static Expr field_of(Expr e, int field);
   Expr var(int slot) const;
+  std::vector<Expr> arguments();  // ( expression, ... )
   Expr construct(Type t, const Token& at);
   Expr primary();
   Expr call(const std::string& name, const Token& at);

@@ -215,7 +215,7 @@ Expr BodyParser::var(int slot) const {
   return e;
 }
 
-Expr BodyParser::construct(Type t, const Token& at) {
+std::vector<Expr> BodyParser::arguments() {
   expect("(");
   std::vector<Expr> args;
   if (!is_punct(")")) {
@@ -226,6 +226,11 @@ Expr BodyParser::construct(Type t, const Token& at) {
     }
   }
   expect(")");
+  return args;
+}
+
+Expr BodyParser::construct(Type t, const Token& at) {
+  std::vector<Expr> args = arguments();
   if (args.size() == 1) {
     if (args[0].type == t) return std::move(args[0]);
     if (t == Type::kVec3 && args[0].type == Type::kVec2) return convert(std::move(args[0]), t);
@@ -297,16 +302,7 @@ Expr BodyParser::call(const std::string& name, const Token& at) {
     fail_at(at, "a call to " + name +
                     ", which is not translated to GLSL (fabs abs sqrt min max fmin fmax floor ceil pow exp log "
                     "sin cos tan atan2 Normalize, V2d V3d, .Length() .Normalized())");
-  expect("(");
-  std::vector<Expr> args;
-  if (!is_punct(")")) {
-    args.push_back(expression());
-    while (is_punct(",")) {
-      ++at_;
-      args.push_back(expression());
-    }
-  }
-  expect(")");
+  std::vector<Expr> args = arguments();
   const std::string& glsl = f->second;
   const std::size_t want = (glsl == "min" || glsl == "max" || glsl == "pow" || glsl == "atan") ? 2 : 1;
   if (args.size() != want) fail_at(at, name + " of " + std::to_string(args.size()) + " arguments");
