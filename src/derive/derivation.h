@@ -214,7 +214,11 @@ class Derivation {
     // Parallel passes size the chunks' windows by the highest: where cells
     // divide in waves growth swings from step to step (1.19 to 1.38 in the
     // structs benchmark), and a window sized by the last step overflows.
-    double highest() const { return *std::max_element(recent.begin(), recent.end()); }
+    // At most half again the last, though: a burst of growth some steps ago
+    // (an axiom setting up a field) would reserve memory the run may lack.
+    double for_windows() const {
+      return std::min(*std::max_element(recent.begin(), recent.end()), last() * 1.5);
+    }
   };
   // Notes in `growth` how much next_ grew over string_ in the pass just run.
   void note_growth(Growth& growth) const;

@@ -145,7 +145,8 @@ bool Derivation::derive_forward_in_parallel() {
     branches_.build_in_parts(starts, [&](std::size_t n, const std::function<void(std::size_t)>& task) {
       run_tasks(threads_, n, task);
     });
-  run_in_chunks(src, starts, growth_.highest(), [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
+  const double growth = growth_.for_windows();
+  run_in_chunks(src, starts, growth, [&](std::size_t, std::size_t from, std::size_t to, ModuleString& out) {
     return forward_range(src, from, to, out);
   });
   return true;
@@ -157,7 +158,7 @@ bool Derivation::decompose_in_parallel(int max_depth) {
   const std::vector<std::size_t> starts = chunk_starts(src);
   if (starts.size() < 2) return false;
   std::vector<Expansion> expansions(starts.size());
-  const double growth = decomposition_growth_.highest();
+  const double growth = decomposition_growth_.for_windows();
   run_in_chunks(src, starts, growth, [&](std::size_t c, std::size_t from, std::size_t to, ModuleString& out) {
     Expansion& expansion = expansions[c];
     expansion.defer_warnings = true;
