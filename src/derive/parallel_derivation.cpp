@@ -177,8 +177,8 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   const std::size_t n = starts.size();
   auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
   // Each chunk writes its successors straight into next_, in a window sized
-  // from the last pass's growth, with room for chunks growing unevenly as
-  // they did in the last parallel pass, and a tenth more. A chunk that
+  // by `growth`, with room for chunks growing unevenly as they did in the
+  // last parallel pass, and a tenth more. A chunk that
   // outgrows its window goes on in a buffer of its own, at the cost of a
   // copy; room to spare costs too: the parts after it move down over it when
   // they are joined, faulting in the pages it left empty. Measured on the
