@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -167,6 +168,12 @@ TEST(ParallelDerivation, FaultsInItsPagesAStretchAtATime) {
   // parts move, 37 of them fault; before the windows were faulted in a
   // stretch at a time, 338 did.
   EXPECT_LT(counter.faults(), 20u);
+  // And the parts are where a serial pass puts them.
+  options.threads = 1;
+  Simulation serial(model, options, [](const std::string&) {});
+  serial.run(10);
+  ASSERT_EQ(serial.string().size_bytes(), simulation.string().size_bytes());
+  EXPECT_EQ(std::memcmp(serial.string().data(), simulation.string().data(), serial.string().size_bytes()), 0);
 }
 
 // The next parallel pass cuts the string where the last one noted that
