@@ -145,7 +145,6 @@ class PageFaultCounter {
 // A parallel pass's pages come in a stretch at a time, as a serial pass's
 // do: the chunks' windows, and the parts' moves into place.
 TEST(ParallelDerivation, FaultsInItsPagesAStretchAtATime) {
-  if (!kernel_populates_pages()) GTEST_SKIP() << "this kernel faults pages in one by one";
   const std::string model = write_temp_file("parallel-pages", "koch.l",
                                             "#include <lpfgall.h>\n"
                                             "derivation length: 10;\n"
@@ -160,14 +159,14 @@ TEST(ParallelDerivation, FaultsInItsPagesAStretchAtATime) {
   Simulation simulation(model, options, [](const std::string&) {});
   for (int step = 1; step < 10; ++step) simulation.step();  // the helper thread is started
   const PageFaultCounter counter;
-  if (!counter.counting()) GTEST_SKIP() << "this process may not count its page faults";
   simulation.step();  // 1 048 576 A and 1 048 575 B: 12.6 MB
   ASSERT_EQ(simulation.string().size_bytes(), (1048576u + 1048575u) * 6u);
   EXPECT_TRUE(simulation.parallel_explanation().find("productions: parallel") != std::string::npos);
   // The step writes 3080 fresh pages. Faulted in page by page where the
   // parts move, 37 of them fault; before the windows were faulted in a
-  // stretch at a time, 338 did.
-  EXPECT_LT(counter.faults(), 20u);
+  // stretch at a time, 338 did. Not checked where the kernel faults pages
+  // in one by one, or where this process may not count its faults.
+  if (kernel_populates_pages() && counter.counting()) EXPECT_LT(counter.faults(), 20u);
   // And the parts are where a serial pass puts them.
   options.threads = 1;
   Simulation serial(model, options, [](const std::string&) {});
