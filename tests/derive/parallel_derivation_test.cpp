@@ -142,8 +142,9 @@ class PageFaultCounter {
   std::vector<int> fds_;
 };
 
-// A parallel pass's pages come in a stretch at a time, as a serial pass's
-// do: the chunks' windows, and the parts' moves into place.
+// A parallel pass over a 3 MB string: its pages come in a stretch at a
+// time, as a serial pass's do (the chunks' windows, and the parts' moves
+// into place), and its parts land where a serial pass puts them.
 TEST(ParallelDerivation, FaultsInItsPagesAStretchAtATime) {
   const std::string model = write_temp_file("parallel-pages", "koch.l",
                                             "#include <lpfgall.h>\n"
