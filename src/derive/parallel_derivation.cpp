@@ -178,12 +178,11 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
   // Each chunk writes its successors straight into next_, in a window sized
   // by `growth`, with room for chunks growing unevenly as they did in the
-  // last parallel pass, and a tenth more. A chunk that
-  // outgrows its window goes on in a buffer of its own, at the cost of a
-  // copy; room to spare costs too: the parts after it move down over it when
-  // they are joined, faulting in the pages it left empty. Measured on the
-  // benchmark models, a tenth costs least in all (2 and 25 percent were
-  // tried).
+  // last parallel pass, and a tenth more. A chunk that outgrows its window
+  // goes on in a buffer of its own, at the cost of a copy; room to spare
+  // costs too: the parts after it move down over it when they are joined,
+  // faulting in the pages it left empty. Measured on the benchmark models, a
+  // tenth costs least in all (2 and 25 percent were tried).
   constexpr std::size_t kPage = 4096;
   auto expected = [&](std::size_t c) { return static_cast<double>(end_of(c) - starts[c]) * growth; };
   std::vector<std::size_t> window(n + 1, 0);
@@ -236,6 +235,13 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
     if (place[c] < window[c]) next_.fault_in(place[c], std::min(place[c + 1], window[c]));
     if (place[c + 1] > own_end) next_.fault_in(std::max(place[c], own_end), place[c + 1]);
   };
+  // Part `c` moved to its place, from its window or the buffer it spilled into.
+  auto move = [&](std::size_t c) {
+    fault_in_destination(c);
+    const ModuleString& part = chunks[c].out;
+    const unsigned char* from = part.writes_in_window() ? data + window[c] : part.data();
+    if (part.size_bytes() && from != data + place[c]) std::memmove(data + place[c], from, part.size_bytes());
+  };
   auto joins_early = [&](std::size_t c) {
     return !chunks[c].failure && chunks[c].out.writes_in_window() && (c == 0 || chunks[c - 1].reached == starts[c]);
   };
@@ -246,11 +252,9 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
     a_thread_joins = true;
     while (joined < n && done[joined] && joins_early(joined)) {
       const std::size_t j = joined;
-      const std::size_t size = chunks[j].out.size_bytes();
-      place[j + 1] = place[j] + size;
+      place[j + 1] = place[j] + chunks[j].out.size_bytes();
       lock.unlock();
-      fault_in_destination(j);
-      if (size && place[j] != window[j]) std::memmove(data + place[j], data + window[j], size);
+      move(j);
       lock.lock();
       joined = j + 1;
     }
@@ -287,12 +291,6 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   // lowest first; then those moving up, highest first; then those that left
   // their windows. Each then writes over nothing that has yet to move.
   data = next_.data_for_writing();
-  auto move = [&](std::size_t c) {
-    fault_in_destination(c);
-    const ModuleString& part = chunks[c].out;
-    const unsigned char* from = part.writes_in_window() ? data + window[c] : part.data();
-    if (part.size_bytes() && from != data + place[c]) std::memmove(data + place[c], from, part.size_bytes());
-  };
   for (std::size_t c = joined; c < n; ++c)
     if (chunks[c].out.writes_in_window() && place[c] <= window[c]) move(c);
   for (std::size_t c = n; c-- > joined;)

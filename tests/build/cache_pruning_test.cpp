@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -36,10 +35,7 @@ class CachePruning : public CacheTest {
   }
   build::ModelCache cache() const { return build::ModelCache(options_.cache_dir); }
   // The size of the cache as last counted, as runs keep it.
-  std::string tally() const {
-    std::ifstream in(options_.cache_dir + "/cache-size");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string tally() const { return read_text(options_.cache_dir + "/cache-size"); }
   void set_tally(const std::string& text) { std::ofstream(options_.cache_dir + "/cache-size") << text; }
 };
 

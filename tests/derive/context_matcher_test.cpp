@@ -349,11 +349,11 @@ TEST_F(ContextMatcherTest, BracketsCountEvenWhenFiltered) {
 
 // ---- the branch index --------------------------------------------------------
 
-// Partners worked by hand: offsets are 8 bytes for A(int) and B(int) ([id]
-// [int][id]), 2 for C, [ and ].
 // Both ways of keeping partners: in 4 bytes (strings under 4 GiB) and in 8.
 constexpr std::size_t kNarrow = std::size_t{1} << 32, kWide = 0;
 
+// Partners worked by hand: offsets are 8 bytes for A(int) and B(int) ([id]
+// [int][id]), 2 for C, [ and ].
 TEST_F(ContextMatcherTest, BranchIndexPairsEachBracketWithItsPartner) {
   for (std::size_t narrow_below : {kNarrow, kWide}) {
     ModuleString s = parse("A(1) [ B(2) [ C ] ] C");  // A 0, [ 6, B 7, [ 13, C 14, ] 15, ] 16, C 17
