@@ -276,13 +276,15 @@ void register_all() {
           ->Unit(benchmark::kMillisecond);
     }
   }
-  // Speed-up with threads: a context-free model and an ordinary-context one;
+  // Speed-up with threads: the context-free models (one float a module,
+  // none, and branches) and the ordinary-context one, not those whose new
+  // context keeps them serial;
   // `reused`, with the buffers of the last iteration: the speed-up without
   // faulting in fresh pages, which on virtual machines scales worse than the
   // rewriting does.
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (bool fresh : {true, false})
-    for (const Derived& m : {derived[0], derived[3]})
+    for (const Derived& m : {derived[0], derived[1], derived[2], derived[3]})
       for (int threads = 1; threads <= cores; threads *= 2)
         benchmark::RegisterBenchmark(("Threads/" + std::string(m.model) + "/" + std::to_string(m.steps) + "/" +
                                       std::to_string(threads) + (fresh ? "" : "/reused"))

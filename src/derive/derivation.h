@@ -9,10 +9,12 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "continuous/continuous_run.h"
@@ -211,12 +213,13 @@ class Derivation {
   struct Growth {
     std::array<double, 4> recent{1.5, 1.5, 1.5, 1.5};
     double last() const { return recent[0]; }
-    // Parallel passes size the chunks' windows by the highest: where cells
+    // Parallel passes reserve the next string by the highest: where cells
     // divide in waves growth swings from step to step (1.19 to 1.38 in the
-    // structs benchmark), and a window sized by the last step overflows.
+    // structs benchmark), and parts that find no room reserved are copied
+    // in after the pass, on one thread.
     // At most half again the last, though: a burst of growth some steps ago
     // (an axiom setting up a field) would reserve memory the run may lack.
-    double for_windows() const {
+    double for_parallel_pass() const {
       return std::min(*std::max_element(recent.begin(), recent.end()), last() * 1.5);
     }
   };
@@ -225,9 +228,10 @@ class Derivation {
 
   // Why passes of `kind` run serially whatever the string, or empty.
   std::string serial_reason(abi::RuleKind kind) const;
-  // Where the chunks of a parallel pass over `src` start; none when the
-  // string is too short to split.
-  std::vector<std::size_t> chunk_starts(const StringView& src) const;
+  // Where the chunks of a parallel pass over `src` start, for a pass that
+  // writes `growth` bytes for each byte it reads; none when the string is
+  // too short to split.
+  std::vector<std::size_t> chunk_starts(const StringView& src, double growth) const;
   // A forward step, or decomposition, on several threads into next_; false
   // (nothing done) where it must be serial.
   bool derive_forward_in_parallel();
@@ -368,14 +372,15 @@ class Derivation {
   ModuleString reaction_scratch_;               // where those bodies write
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
-  // Each chunk's successors in a parallel pass, kept from pass to pass so
-  // that their pages are faulted in once, not at every step. A cache line
-  // each: threads appending to neighbouring buffers would otherwise write
-  // the same line at every module.
+  // Where the chunks of a parallel pass write their successors: a pool,
+  // kept from pass to pass so that their pages are faulted in once, not at
+  // every step. A cache line each: threads appending to neighbouring
+  // buffers would otherwise write the same line at every module.
   struct alignas(64) ChunkOutput {
     ModuleString string;
+    std::thread::id writer;  // the thread that wrote it last
   };
-  std::vector<ChunkOutput> chunk_out_;
+  std::vector<std::unique_ptr<ChunkOutput>> spare_outputs_;
   bool forward_parallel_ = false;        // no production's body keeps productions serial
   bool decomposition_parallel_ = false;  // nor a decomposition rule's decomposition
   bool keyed_random_ = false;
@@ -383,9 +388,9 @@ class Derivation {
   static constexpr double kMaxGrowthReserved = 8;
   Growth growth_;
   Growth decomposition_growth_;
-  // How much more than the whole string the fastest-growing chunk of the
-  // last parallel pass grew (run_in_chunks).
-  double chunk_growth_spread_ = 1.25;
+  // How much more the string grew in the last parallel pass than its
+  // growth before foretold (run_in_chunks).
+  double growth_spread_ = 1.25;
 };
 
 }  // namespace sylva::derive

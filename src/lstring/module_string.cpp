@@ -94,12 +94,6 @@ std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
   return to;
 }
 
-// A window lent from a mapped buffer, at a page boundary: however small,
-// its pages fault in as a mapped buffer's do.
-bool in_mapped_pages(const OwnedModuleBuffer& b) {
-  return b.lent && reinterpret_cast<std::uintptr_t>(b.data) % kPage == 0;
-}
-
 // The reservation a buffer of `current` bytes grows to for `needed`.
 std::size_t reservation(std::size_t current, std::size_t needed, const RunBudget* budget) {
   std::size_t reserved = grown_capacity(current, needed);
@@ -121,27 +115,16 @@ void grow_buffer(abi::ModuleBuffer* buffer, std::size_t min_capacity) {
   }
   if (min_capacity > b.reserved) {
     std::size_t reserved = reservation(b.reserved, min_capacity, budget);
-    if (b.lent) {  // the window is full: on in a buffer of its own
-      unsigned char* own = allocate_bytes(reserved);
-      if (is_mapped(reserved)) fault_in(own, (b.size + kPage - 1) / kPage * kPage);
-      std::memcpy(own, b.data, b.size);
-      b.data = own;
-      b.capacity = b.size;
-      b.lent = false;
-      b.reserved = reserved;
-    } else {
-      b.data = reallocate_bytes(b.data, b.reserved, b.size, reserved);
-      b.reserved = reserved;
-    }
+    b.data = reallocate_bytes(b.data, b.reserved, b.size, reserved);
+    b.reserved = reserved;
   }
-  b.capacity = is_mapped(b.reserved) || in_mapped_pages(b) ? populate(b, min_capacity) : b.reserved;
+  b.capacity = is_mapped(b.reserved) ? populate(b, min_capacity) : b.reserved;
 }
 
 void release(OwnedModuleBuffer& b) {
-  if (!b.lent) free_bytes(b.data, b.reserved);
+  free_bytes(b.data, b.reserved);
   b.data = nullptr;
   b.size = b.capacity = b.reserved = 0;
-  b.lent = false;
 }
 
 }  // namespace
@@ -158,7 +141,6 @@ ModuleString::ModuleString(ModuleString&& other) noexcept
     : buffer_(other.buffer_), known_starts_(std::move(other.known_starts_)) {
   other.buffer_.data = nullptr;
   other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
-  other.buffer_.lent = false;
 }
 
 ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
@@ -168,7 +150,6 @@ ModuleString& ModuleString::operator=(ModuleString&& other) noexcept {
     known_starts_ = std::move(other.known_starts_);
     other.buffer_.data = nullptr;
     other.buffer_.size = other.buffer_.capacity = other.buffer_.reserved = 0;
-    other.buffer_.lent = false;
   }
   return *this;
 }
@@ -203,19 +184,8 @@ void ModuleString::grow_unwritten(std::size_t bytes, std::size_t kept) {
   else buffer_.capacity = std::min(buffer_.capacity, reserved);
 }
 
-void ModuleString::write_into(unsigned char* window, std::size_t room, std::size_t ready) {
-  release(buffer_);
-  known_starts_.clear();
-  buffer_.data = window;
-  buffer_.reserved = room;
-  // Faulting in pages that are in already costs a walk of them: in a
-  // parallel pass on two threads, 2% of the CPU time.
-  buffer_.capacity = std::min(ready, room);
-  buffer_.lent = true;
-}
-
 void ModuleString::fault_in(std::size_t from, std::size_t to) {
-  if (!is_mapped(buffer_.reserved) || buffer_.lent) return;
+  if (!is_mapped(buffer_.reserved)) return;
   from = from / kPage * kPage;
   to = std::min(to, buffer_.reserved);
   if (to > from) sylva::fault_in(buffer_.data + from, to - from);
@@ -245,7 +215,6 @@ void ModuleString::assign(const unsigned char* bytes, std::size_t n) {
 void ModuleString::take(PrependBuffer& built) {
   const std::size_t n = built.size_bytes();
   if (n && built.begin_) std::memmove(built.data_, built.data_ + built.begin_, n);
-  if (buffer_.lent) release(buffer_);
   unsigned char* old_data = buffer_.data;
   const std::size_t old_reserved = buffer_.reserved;
   buffer_.data = built.data_;

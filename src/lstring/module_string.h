@@ -58,8 +58,7 @@ struct StringView {
 // calls `grow`, which faults in the next stretch with one call instead of a
 // fault per page.
 struct OwnedModuleBuffer : abi::ModuleBuffer {
-  std::size_t reserved = 0;  // bytes allocated, or lent; capacity <= reserved
-  bool lent = false;         // the bytes are a window of another string's buffer
+  std::size_t reserved = 0;  // bytes allocated; capacity <= reserved
 };
 
 // An owned, growable string of modules.
@@ -104,29 +103,23 @@ class ModuleString {
   }
   void append_module(ModuleId id, const void* params, std::size_t param_size);
 
-  // Writing in place: a parallel pass's chunks write their parts of the next
-  // string straight into its buffer, each in a window of it, so that the
-  // parts need no copying into one string and no memory of their own.
-  // Maps `bytes` for this string without faulting them in (the windows'
+  // Writing in place: a parallel pass copies its chunks' parts of the next
+  // string straight into its buffer, each once the parts before it are
+  // written. Maps `bytes` for this string without faulting them in (the
   // writers do that), and empties it.
   void reserve_unwritten(std::size_t bytes);
-  // The same for a string whose windows are being written: their bytes are
-  // kept, and may move (they are at the same offsets from data()).
+  // The same, keeping the bytes written so far (they may move, at the same
+  // offsets from data()).
   void reserve_unwritten_keeping(std::size_t bytes);
-  // From now on this string (emptied) writes into the `room` bytes at
-  // `window`, a page boundary in another string's buffer, the first `ready`
-  // of them faulted in already; past them it moves what it has into a buffer
-  // of its own and goes on there.
-  void write_into(unsigned char* window, std::size_t room, std::size_t ready);
-  bool writes_in_window() const { return buffer_.lent; }
-  // Bytes the string can take before its buffer grows: in a mapped buffer or
-  // a window of one, where the pages faulted in end.
+  std::size_t reserved_bytes() const { return buffer_.reserved; }
+  // Bytes the string can take before its buffer grows: in a mapped buffer,
+  // where the pages faulted in end.
   std::size_t ready_bytes() const { return buffer_.capacity; }
   // Faults in at once the pages of bytes [from, to) of a mapped buffer
-  // (see grow_buffer), before parts of the string move there.
+  // (see grow_buffer), before a part of the string is copied there.
   void fault_in(std::size_t from, std::size_t to);
-  // The first `size` bytes were written through windows, and the pages of
-  // the first `ready` are faulted in.
+  // The first `size` bytes were written in place, and the pages of the
+  // first `ready` were faulted in before.
   void set_written_size(std::size_t size, std::size_t ready);
 
   // Offsets known to start modules, in order, or none: some of the starts a

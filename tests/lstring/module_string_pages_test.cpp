@@ -51,33 +51,8 @@ class ModuleStringPages : public ::testing::Test {
   ModuleString whole_;
 };
 
-// A window of 64 KiB, too small to be a mapped buffer of its own, is still
-// part of one: its first module faults in all of it.
-TEST_F(ModuleStringPages, AWindowFaultsInItsPagesAtOnce) {
-  ModuleString window;
-  window.write_into(whole_.data_for_writing() + 16 * kPage, 16 * kPage, 0);
-  append_bytes(window, 1);
-  EXPECT_EQ(window.ready_bytes(), 16 * kPage);
-  const std::vector<bool> pages = resident(whole_.data(), 40 * kPage);
-  for (std::size_t p = 0; p < pages.size(); ++p) EXPECT_EQ(pages[p], p >= 16 && p < 32) << "page " << p;
-}
-
-// Pages the buffer's earlier passes faulted in are not faulted in again:
-// the window writes into them without growing.
-TEST_F(ModuleStringPages, AWindowWritesIntoPagesFaultedInBeforeWithoutGrowing) {
-  ModuleString window;
-  window.write_into(whole_.data_for_writing(), 16 * kPage, 2 * kPage);
-  EXPECT_EQ(window.ready_bytes(), 2 * kPage);
-  append_bytes(window, 2 * kPage);  // grows only at the next byte
-  EXPECT_EQ(window.ready_bytes(), 2 * kPage);
-  append_bytes(window, 1);
-  EXPECT_EQ(window.ready_bytes(), 16 * kPage);
-  // More than it holds: the room it was lent.
-  ModuleString small;
-  small.write_into(whole_.data_for_writing() + 16 * kPage, kPage, 5 * kPage);
-  EXPECT_EQ(small.ready_bytes(), kPage);
-}
-
+// Before a part is copied into the string, its stretch is faulted in at
+// once.
 TEST_F(ModuleStringPages, AStretchIsFaultedInOnAsking) {
   whole_.fault_in(3 * kPage + 100, 6 * kPage);  // from the page holding its first byte
   const std::vector<bool> pages = resident(whole_.data(), 10 * kPage);
@@ -87,9 +62,9 @@ TEST_F(ModuleStringPages, AStretchIsFaultedInOnAsking) {
 }
 
 // After a parallel pass the string knows how far its pages are in: as far
-// as its windows faulted them in, or as it was written, and no further than
-// its buffer goes.
-TEST_F(ModuleStringPages, AStringWrittenThroughWindowsKnowsWhereItsPagesEnd) {
+// as earlier passes faulted them in, or as it was written, and no further
+// than its buffer goes.
+TEST_F(ModuleStringPages, AStringWrittenInPlaceKnowsWhereItsPagesEnd) {
   whole_.set_written_size(100, 5 * kPage);
   EXPECT_EQ(whole_.ready_bytes(), 5 * kPage);
   whole_.set_written_size(7 * kPage + 1, 5 * kPage);
@@ -100,7 +75,7 @@ TEST_F(ModuleStringPages, AStringWrittenThroughWindowsKnowsWhereItsPagesEnd) {
 }
 
 // A buffer that becomes a mapped one faults in only what it kept: nothing,
-// for a string about to be written through windows.
+// for a string about to be written in place.
 TEST(ModuleStringPagesOfNewBuffer, NoneAreInWhenAStringMovesToAMappedBuffer) {
   ModuleString s;
   append_bytes(s, 1000);  // a small buffer, all of it ready
