@@ -9,15 +9,14 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <set>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "continuous/continuous_run.h"
+#include "derive/chunk_output_pool.h"
 #include "derive/gillespie.h"
 #include "derive/parameter_writes.h"
 #include "derive/rule_index.h"
@@ -372,15 +371,7 @@ class Derivation {
   ModuleString reaction_scratch_;               // where those bodies write
   int threads_ = 1;
   std::size_t min_chunk_bytes_ = kMinChunkBytes;
-  // Where the chunks of a parallel pass write their successors: a pool,
-  // kept from pass to pass so that their pages are faulted in once, not at
-  // every step. A cache line each: threads appending to neighbouring
-  // buffers would otherwise write the same line at every module.
-  struct alignas(64) ChunkOutput {
-    ModuleString string;
-    std::thread::id writer;  // the thread that wrote it last
-  };
-  std::vector<std::unique_ptr<ChunkOutput>> spare_outputs_;
+  ChunkOutputPool chunk_outputs_;  // where a parallel pass's chunks write
   bool forward_parallel_ = false;        // no production's body keeps productions serial
   bool decomposition_parallel_ = false;  // nor a decomposition rule's decomposition
   bool keyed_random_ = false;

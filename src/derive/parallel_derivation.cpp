@@ -12,8 +12,8 @@
 #include <exception>
 #include <memory>
 #include <mutex>
-#include <thread>
 
+#include "derive/chunk_output_pool.h"
 #include "derive/derivation.h"
 #include "derive/keyed_random.h"
 #include "derive/worker_threads.h"
@@ -187,7 +187,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
                                const RangePass& range) {
   // Each chunk writes its successors into a buffer of its own, small enough
   // to stay in its core's cache (chunk_starts), and the part is copied into
-  // next_ once the parts before it are written: where it goes is then known.
+  // next_ once the chunks before it are done: where it goes is then known.
   // So next_ is written once, in order, as a serial pass writes it, and the
   // copy is cheap: the pages it writes, faulted in just before, are still
   // in the cache (6 ms of thread time in the last koch step, 191 MB, on two
@@ -201,57 +201,33 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   const std::size_t room = next_.reserved_bytes();
   const std::size_t ready = next_.ready_bytes();  // faulted in by earlier passes
   struct Chunk {
-    std::unique_ptr<ChunkOutput> out;
+    std::unique_ptr<ChunkOutputPool::Output> out;
     std::size_t reached = 0;  // where its pass stopped: at or past the next chunk's start
     std::exception_ptr failure = nullptr;
     std::vector<std::size_t> noted;  // the module starts its part noted, once copied
     bool done = false;
   };
   std::vector<Chunk> chunks(n);
-  std::mutex placing;  // guards the pool of outputs, and what follows
+  // The chunks' outputs go back to the pool however the pass ends. Two for
+  // each thread are kept: where a thread was held up, the others filled
+  // more while their parts waited for its chunk.
+  struct GiveBack {
+    std::vector<Chunk>& chunks;
+    ChunkOutputPool& pool;
+    std::size_t kept;
+    ~GiveBack() {
+      for (Chunk& chunk : chunks)
+        if (chunk.out) pool.give_back(std::move(chunk.out));
+      pool.keep_at_most(kept);
+    }
+  } give_back{chunks, chunk_outputs_, 2 * static_cast<std::size_t>(threads_)};
+  std::mutex placing;  // guards what follows
   std::vector<std::size_t> place(n + 1, 0);  // where each part goes in next_
   std::size_t placed = 0;  // parts [0, placed) have their places
   std::size_t claimed = 0;  // parts [0, claimed) are being or have been copied
-  // The chunks' outputs go back to the pool (kept from pass to pass, as
-  // their pages are) however the pass ends. Two for each thread are kept:
-  // where a thread was held up, the others filled more while the parts
-  // waited for its chunk.
-  struct Pooled {
-    std::vector<Chunk>& chunks;
-    std::vector<std::unique_ptr<ChunkOutput>>& pool;
-    std::size_t kept;
-    ~Pooled() {
-      for (Chunk& chunk : chunks)
-        if (chunk.out) pool.push_back(std::move(chunk.out));
-      if (pool.size() > kept) pool.resize(kept);
-    }
-  } pooled{chunks, spare_outputs_, 2 * static_cast<std::size_t>(threads_)};
-  auto take_output = [&] {
-    std::lock_guard<std::mutex> lock(placing);
-    // The one this thread used last, if it is in the pool: its lines are in
-    // this core's cache, another thread's are in another's.
-    const std::thread::id self = std::this_thread::get_id();
-    auto kept = std::find_if(spare_outputs_.rbegin(), spare_outputs_.rend(),
-                             [&](const std::unique_ptr<ChunkOutput>& out) { return out->writer == self; });
-    std::unique_ptr<ChunkOutput> out;
-    if (kept != spare_outputs_.rend()) {
-      out = std::move(*kept);
-      spare_outputs_.erase(std::next(kept).base());
-    } else if (!spare_outputs_.empty()) {
-      out = std::move(spare_outputs_.back());
-      spare_outputs_.pop_back();
-    } else {
-      out = std::make_unique<ChunkOutput>();
-      // Room for a part four times the usual: a buffer that large has its
-      // pages faulted in a stretch at a time, not one by one as it grows.
-      out->string.reserve(4 * kPartBytes);
-    }
-    out->writer = self;
-    return out;
-  };
   auto rewrite = [&](std::size_t c, std::size_t from) {
     Chunk& chunk = chunks[c];
-    chunk.out->string.clear();
+    chunk.out->string.clear();  // a chunk rewritten again
     chunk.failure = nullptr;
     try {
       chunk.reached = range(c, from, end_of(c), chunk.out->string);
@@ -277,7 +253,9 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
            place[c] + chunk.out->string.size_bytes() <= room;
   };
   run_tasks(threads_, n, [&](std::size_t c) {
-    chunks[c].out = take_output();
+    // Room for a part four times the usual in a new buffer: one that large
+    // has its pages faulted in a stretch at a time, not one by one.
+    chunks[c].out = chunk_outputs_.take(4 * kPartBytes);
     rewrite(c, starts[c]);
     std::size_t first, last;  // the parts this thread copies
     {
@@ -288,9 +266,10 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
       first = claimed;
       last = claimed = placed;
     }
-    for (std::size_t k = first; k < last; ++k) copy(k);
-    std::lock_guard<std::mutex> lock(placing);
-    for (std::size_t k = first; k < last; ++k) spare_outputs_.push_back(std::move(chunks[k].out));
+    for (std::size_t k = first; k < last; ++k) {
+      copy(k);
+      chunk_outputs_.give_back(std::move(chunks[k].out));
+    }
   });
   // A chunk whose first modules the one before rewrote (a predecessor of
   // several modules, or a cut, across the boundary) is rewritten again from

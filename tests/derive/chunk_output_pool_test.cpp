@@ -1,0 +1,58 @@
+// The buffers a parallel pass's chunks write into: each thread gets back the
+// one it took last, a new one comes with the room asked for, and every one
+// comes empty.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <thread>
+
+#include "derive/chunk_output_pool.h"
+
+namespace sylva::derive {
+namespace {
+
+using Output = ChunkOutputPool::Output;
+
+void fill(Output& output, int modules) {
+  for (int k = 0; k < modules; ++k) output.string.append_module(0, nullptr, 0);
+}
+
+TEST(ChunkOutputPool, ANewBufferHasTheRoomAskedFor) {
+  ChunkOutputPool pool;
+  const std::unique_ptr<Output> output = pool.take(1 << 20);
+  EXPECT_GE(output->string.reserved_bytes(), std::size_t{1} << 20);
+  EXPECT_TRUE(output->string.empty());
+  EXPECT_EQ(pool.size(), 0u);
+}
+
+TEST(ChunkOutputPool, AThreadGetsBackTheBufferItTookLast) {
+  ChunkOutputPool pool;
+  std::unique_ptr<Output> mine = pool.take(64);
+  std::unique_ptr<Output> theirs;
+  std::thread([&] { theirs = pool.take(64); }).join();
+  const Output* mine_was = mine.get();
+  const Output* theirs_was = theirs.get();
+  fill(*mine, 10);
+  // Given back in this order, the last one in is the other thread's.
+  pool.give_back(std::move(mine));
+  pool.give_back(std::move(theirs));
+  const std::unique_ptr<Output> again = pool.take(64);
+  EXPECT_EQ(again.get(), mine_was);
+  EXPECT_TRUE(again->string.empty());
+  // Where the pool has none of a thread's own, it takes another's.
+  std::unique_ptr<Output> other;
+  std::thread([&] { other = pool.take(64); }).join();
+  EXPECT_EQ(other.get(), theirs_was);
+}
+
+TEST(ChunkOutputPool, KeepsAtMostWhatItIsTold) {
+  ChunkOutputPool pool;
+  for (int k = 0; k < 5; ++k) pool.give_back(std::make_unique<Output>());
+  pool.keep_at_most(2);
+  EXPECT_EQ(pool.size(), 2u);
+  pool.keep_at_most(3);
+  EXPECT_EQ(pool.size(), 2u);
+}
+
+}  // namespace
+}  // namespace sylva::derive
