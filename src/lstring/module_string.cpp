@@ -191,6 +191,13 @@ void ModuleString::fault_in(std::size_t from, std::size_t to) {
   if (to > from) sylva::fault_in(buffer_.data + from, to - from);
 }
 
+void ModuleString::release_pages(std::size_t from, std::size_t to) const {
+  if (!is_mapped(buffer_.reserved)) return;
+  from = (from + kPage - 1) / kPage * kPage;
+  to = std::min(to, buffer_.reserved) / kPage * kPage;
+  if (to > from) madvise(buffer_.data + from, to - from, MADV_DONTNEED);
+}
+
 void ModuleString::set_written_size(std::size_t size, std::size_t ready) {
   buffer_.size = size;
   // Written means faulted in: the capacity goes on from there.

@@ -121,6 +121,10 @@ class ModuleString {
   // The first `size` bytes were written in place, and the pages of the
   // first `ready` were faulted in before.
   void set_written_size(std::size_t size, std::size_t ready);
+  // Gives the pages of bytes [from, to) of a mapped buffer back to the
+  // system, as freeing the buffer would: for a string about to be freed,
+  // whose pages several threads give back at once (disjoint stretches).
+  void release_pages(std::size_t from, std::size_t to) const;
 
   // Offsets known to start modules, in order, or none: some of the starts a
   // pass noted as it wrote the string, and where a parallel pass joined its

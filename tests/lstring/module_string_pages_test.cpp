@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "lstring/module_string.h"
@@ -59,6 +60,21 @@ TEST_F(ModuleStringPages, AStretchIsFaultedInOnAsking) {
   for (std::size_t p = 0; p < pages.size(); ++p) EXPECT_EQ(pages[p], p >= 3 && p < 6) << "page " << p;
   whole_.fault_in(6 * kPage, 200 << 20);  // not past the buffer
   EXPECT_EQ(count(resident(whole_.data(), 8 << 20)), (8 << 20) / kPage - 3);
+}
+
+// A string about to be freed gives its pages back a stretch at a time
+// (from the page after `from`'s first byte to the page holding `to`), from
+// several threads at once.
+TEST_F(ModuleStringPages, PagesAreGivenBackAStretchAtATime) {
+  whole_.fault_in(0, 16 * kPage);
+  std::thread other([&] { whole_.release_pages(8 * kPage, 12 * kPage); });
+  whole_.release_pages(2 * kPage + 100, 6 * kPage + 100);
+  other.join();
+  const std::vector<bool> pages = resident(whole_.data(), 16 * kPage);
+  for (std::size_t p = 0; p < pages.size(); ++p)
+    EXPECT_EQ(pages[p], !((p >= 3 && p < 6) || (p >= 8 && p < 12))) << "page " << p;
+  whole_.release_pages(14 * kPage, 200 << 20);  // not past the buffer
+  EXPECT_EQ(count(resident(whole_.data(), 8 << 20)), 16u - 3 - 4 - 2);
 }
 
 // After a parallel pass the string knows how far its pages are in: as far
