@@ -9,7 +9,6 @@
 #include "derive/group_check.h"
 #include "derive/in_body_context.h"
 #include "derive/keyed_random.h"
-#include "derive/worker_threads.h"
 #include "lstring/run_limits.h"
 #include "support/diagnostic.h"
 #include "support/model_faults.h"
@@ -111,26 +110,6 @@ Derivation::~Derivation() {
   model_.control->host = nullptr;
   model_.control->message = nullptr;
   release_strings_in_parallel();
-}
-
-// Freeing a string's pages is the kernel's work, on the thread that frees
-// it, while the others wait: at the end of a koch run, 24 ms for its two
-// strings (250 MB). The pages are given back in stretches on every thread
-// first, and the freeing then finds none.
-void Derivation::release_strings_in_parallel() {
-  if (threads_ < 2) return;
-  constexpr std::size_t kStretch = std::size_t{8} << 20;
-  struct Stretch {
-    const ModuleString* string;
-    std::size_t from;
-  };
-  std::vector<Stretch> stretches;
-  for (const ModuleString* string : {&string_, &next_})
-    for (std::size_t from = 0; from < string->ready_bytes(); from += kStretch) stretches.push_back({string, from});
-  if (stretches.size() < 2) return;
-  run_tasks(threads_, stretches.size(), [&](std::size_t k) {
-    stretches[k].string->release_pages(stretches[k].from, stretches[k].from + kStretch);
-  });
 }
 
 void Derivation::message(const std::string& text) const {
