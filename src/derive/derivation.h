@@ -382,9 +382,6 @@ class Derivation {
   static constexpr double kMaxGrowthReserved = 8;
   Growth growth_;
   Growth decomposition_growth_;
-  // How much more the string grew in the last parallel pass than its
-  // growth before foretold (run_in_chunks).
-  double growth_spread_ = 1.25;
 };
 
 }  // namespace sylva::derive

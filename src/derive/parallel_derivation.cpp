@@ -222,7 +222,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
   const std::size_t n = starts.size();
   auto end_of = [&](std::size_t c) { return c + 1 < n ? starts[c + 1] : src.end; };
   const double expected = static_cast<double>(src.end - src.begin) * growth;
-  next_.reserve_unwritten(static_cast<std::size_t>(expected * growth_spread_ * 1.1));
+  next_.reserve_unwritten(static_cast<std::size_t>(expected * 1.1));
   const std::size_t room = next_.reserved_bytes();
   const std::size_t ready = next_.ready_bytes();  // faulted in by earlier passes
   struct Chunk {
@@ -319,8 +319,7 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
     data = next_.data_for_writing();
     for (std::size_t c = placed; c < n; ++c) copy(c);
   }
-  next_.set_written_size(total, ready);
-  if (expected >= 1) growth_spread_ = std::clamp(static_cast<double>(total) / expected, 1.0, 4.0);
+  next_.set_written_size(total);
   // The starts the chunks noted, and where they joined, for the next pass.
   std::vector<std::size_t> known;
   for (std::size_t c = 0; c < n; ++c) {

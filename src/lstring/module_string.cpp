@@ -198,11 +198,11 @@ void ModuleString::release_pages(std::size_t from, std::size_t to) const {
   if (to > from) madvise(buffer_.data + from, to - from, MADV_DONTNEED);
 }
 
-void ModuleString::set_written_size(std::size_t size, std::size_t ready) {
+void ModuleString::set_written_size(std::size_t size) {
   buffer_.size = size;
   // Written means faulted in: the capacity goes on from there.
   const std::size_t written = (size + kPage - 1) / kPage * kPage;
-  buffer_.capacity = std::min(buffer_.reserved, std::max({buffer_.capacity, ready, written}));
+  buffer_.capacity = std::min(buffer_.reserved, std::max(buffer_.capacity, written));
 }
 
 void ModuleString::append_module(ModuleId id, const void* params, std::size_t param_size) {

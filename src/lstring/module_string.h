@@ -118,9 +118,8 @@ class ModuleString {
   // Faults in at once the pages of bytes [from, to) of a mapped buffer
   // (see grow_buffer), before a part of the string is copied there.
   void fault_in(std::size_t from, std::size_t to);
-  // The first `size` bytes were written in place, and the pages of the
-  // first `ready` were faulted in before.
-  void set_written_size(std::size_t size, std::size_t ready);
+  // The first `size` bytes were written in place.
+  void set_written_size(std::size_t size);
   // Gives the pages of bytes [from, to) of a mapped buffer back to the
   // system, as freeing the buffer would: for a string about to be freed,
   // whose pages several threads give back at once (disjoint stretches).

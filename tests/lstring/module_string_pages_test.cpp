@@ -78,16 +78,14 @@ TEST_F(ModuleStringPages, PagesAreGivenBackAStretchAtATime) {
 }
 
 // After a parallel pass the string knows how far its pages are in: as far
-// as earlier passes faulted them in, or as it was written, and no further
-// than its buffer goes.
+// as it was written, rounded up to a page, or as an earlier pass's pages
+// went, whichever is further.
 TEST_F(ModuleStringPages, AStringWrittenInPlaceKnowsWhereItsPagesEnd) {
-  whole_.set_written_size(100, 5 * kPage);
+  whole_.set_written_size(5 * kPage);  // an earlier pass's string
+  whole_.set_written_size(100);
   EXPECT_EQ(whole_.ready_bytes(), 5 * kPage);
-  whole_.set_written_size(7 * kPage + 1, 5 * kPage);
+  whole_.set_written_size(7 * kPage + 1);
   EXPECT_EQ(whole_.ready_bytes(), 8 * kPage);
-  whole_.set_written_size(10, 64 << 20);  // the buffer: 8 MiB and room to grow
-  EXPECT_GE(whole_.ready_bytes(), std::size_t{8} << 20);
-  EXPECT_LT(whole_.ready_bytes(), std::size_t{64} << 20);
 }
 
 // A buffer that becomes a mapped one faults in only what it kept: nothing,

@@ -234,7 +234,7 @@ TEST_F(ModuleStringTest, BytesWrittenInPlaceSurviveGrowth) {
   double value;
   std::memcpy(&value, module_params(whole.data(), 0), sizeof value);
   EXPECT_EQ(value, 1.5);
-  whole.set_written_size(10, 0);
+  whole.set_written_size(10);
   EXPECT_EQ(forward_ids(whole.view(types_)), std::vector<ModuleId>{kP});
 }
 
