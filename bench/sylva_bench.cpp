@@ -170,6 +170,25 @@ void pass_overhead(benchmark::State& state, int threads) {
   for (auto _ : state) sylva::derive::run_tasks(threads, tasks, [](std::size_t k) { benchmark::DoNotOptimize(k); });
 }
 
+void busy_for(std::chrono::microseconds time) {
+  const Clock::time_point end = Clock::now() + time;
+  while (Clock::now() < end) {
+  }
+}
+
+// A pass of four 20 us tasks per thread after 100 us of serial work, as the
+// passes of a step follow each other: on `threads` threads it takes 80 us
+// once every thread has woken.
+void pass_after_serial_work(benchmark::State& state, int threads) {
+  const std::size_t tasks = static_cast<std::size_t>(threads) * 4;
+  for (auto _ : state) {
+    busy_for(std::chrono::microseconds(100));
+    const Clock::time_point start = Clock::now();
+    sylva::derive::run_tasks(threads, tasks, [](std::size_t) { busy_for(std::chrono::microseconds(20)); });
+    state.SetIterationTime(seconds_since(start));
+  }
+}
+
 // ---- diffusion ---------------------------------------------------------------
 
 constexpr int kDiffusionGrowthSteps = 21;  // GROWTH_STEPS in diffusion.l
@@ -293,9 +312,14 @@ void register_all() {
             ->UseManualTime()
             ->Iterations(m.iterations)
             ->Unit(benchmark::kMillisecond);
-  for (int threads = 1; threads <= 16; threads *= 2)
+  for (int threads = 1; threads <= 16; threads *= 2) {
     benchmark::RegisterBenchmark(("Pass/" + std::to_string(threads)).c_str(), pass_overhead, threads)
         ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("PassAfterSerialWork/" + std::to_string(threads)).c_str(), pass_after_serial_work,
+                                 threads)
+        ->UseManualTime()
+        ->Unit(benchmark::kMicrosecond);
+  }
   benchmark::RegisterBenchmark("DiffusionStep", diffusion_step)
       ->UseManualTime()
       ->Iterations(20)

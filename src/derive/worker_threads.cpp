@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -49,13 +50,30 @@ void prepare_helper() {
   model_faults::install_handler();
 }
 
+// Spins for up to `limit` until `ready` says yes; false if it never did. A
+// thread that sleeps on a condition variable takes 15-45 us to wake on a
+// virtual machine (its core halts, and is woken through the hypervisor);
+// passes follow each other closer than that within a step.
+bool spin_until(const std::function<bool()>& ready, std::chrono::microseconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  for (int k = 0;; ++k) {
+    if (ready()) return true;
+    if ((k & 63) == 63 && std::chrono::steady_clock::now() >= end) return false;
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#elif defined(__aarch64__)
+    asm volatile("yield");
+#endif
+  }
+}
+
 // Helper threads kept between passes. Starting and joining fifteen threads
 // for a pass took about 0.8 ms (bench/sylva_bench, Pass/16), and a step on
 // many threads makes a few passes (the branch index, the productions, the
 // decomposition), against some milliseconds of work each. The threads wait
-// for the next pass instead. One pass uses the pool at a time; a pass that
-// finds it in use (another derivation on another thread) starts threads of
-// its own.
+// for the next pass instead: spinning for a while (kSpin), then asleep. One
+// pass uses the pool at a time; a pass that finds it in use (another
+// derivation on another thread) starts threads of its own.
 class HelperPool {
  public:
   pid_t owner() const { return owner_; }
@@ -75,6 +93,7 @@ class HelperPool {
       work_ = &work;
       wanted_ = helpers;
       ++pass_number_;
+      posted_.store(pass_number_, std::memory_order_release);
     }
     wake_.notify_all();
     work();
@@ -82,6 +101,9 @@ class HelperPool {
     // left to do, and need not be waited for.
     std::unique_lock<std::mutex> lock(mutex_);
     wanted_ = 0;
+    lock.unlock();
+    spin_until([&] { return working_.load(std::memory_order_acquire) == 0; }, kSpin);
+    lock.lock();
     done_.wait(lock, [&] { return working_ == 0; });
     return true;
   }
@@ -94,6 +116,9 @@ class HelperPool {
     std::uint64_t last_pass = 0;
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
+      lock.unlock();
+      spin_until([&] { return posted_.load(std::memory_order_acquire) != last_pass; }, kSpin);
+      lock.lock();
       wake_.wait(lock, [&] { return pass_number_ != last_pass && wanted_ > 0; });
       last_pass = pass_number_;
       --wanted_;
@@ -106,14 +131,20 @@ class HelperPool {
     }
   }
 
+  // Long enough to span the serial work between the passes of a step (the
+  // cuts of the string, the sums of a parallel pass) and between steps;
+  // short enough that a pool left idle soon stops taking a core.
+  static constexpr std::chrono::microseconds kSpin{200};
+
   const pid_t owner_ = getpid();
   std::mutex in_use_;  // held by the pass using the pool
   std::mutex mutex_;   // guards what follows
   std::condition_variable wake_, done_;
   std::size_t threads_ = 0;
   std::uint64_t pass_number_ = 0;
+  std::atomic<std::uint64_t> posted_{0};  // pass_number_, read by spinning helpers without the lock
   std::size_t wanted_ = 0;   // helpers the pass still asks for
-  std::size_t working_ = 0;  // helpers running the pass's work
+  std::atomic<std::size_t> working_{0};  // helpers running the pass's work; read spinning without the lock
   const std::function<void()>* work_ = nullptr;
 };
 

@@ -60,15 +60,10 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
         word |= bit;
     }
   });
-  const std::size_t brackets = count_marks();
+  const std::size_t brackets = count_marks(n, for_each_part);
   wide_ = s.end >= std::min<std::size_t>(narrow_below_, kNarrowUnmatched);
-  if (wide_ && brackets > wide_room_) {
-    wide_partners_.reset(new std::size_t[brackets]);
-    wide_room_ = brackets;
-  } else if (!wide_ && brackets > narrow_room_) {
-    narrow_partners_.reset(new std::uint32_t[brackets]);
-    narrow_room_ = brackets;
-  }
+  if (wide_) wide_partners_.reserve(brackets);
+  else narrow_partners_.reserve(brackets);
   struct Bracket {
     std::size_t rank, offset;
   };
@@ -117,22 +112,41 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
 
 void BranchIndex::size_marks() const {
   mark_words_ = string_.end / 64 + 1;
-  if (mark_words_ > mark_room_) {
-    marks_.reset(new std::uint64_t[mark_words_]);
-    mark_room_ = mark_words_;
-  }
+  marks_.reserve(mark_words_);
 }
 
-std::size_t BranchIndex::count_marks() const {
-  counts_.resize(mark_words_);
-  superblock_counts_.assign((mark_words_ >> kSuperblockBits) + 1, 0);
-  std::size_t before = 0;
-  for (std::size_t w = 0; w < mark_words_; ++w) {
-    if ((w & ((std::size_t{1} << kSuperblockBits) - 1)) == 0) superblock_counts_[w >> kSuperblockBits] = before;
-    counts_[w] = static_cast<std::uint32_t>(before - superblock_counts_[w >> kSuperblockBits]);
-    before += bit_count(marks_[w]);
+std::size_t BranchIndex::count_marks(std::size_t ranges, const PartRunner& for_each_range) const {
+  // The words in ranges, each counted on its own: its marks, then (once the
+  // marks before it are summed) the counts of its words. A superblock starts
+  // a range, so its base is a range's sum.
+  constexpr std::size_t kSuperblockWords = std::size_t{1} << kSuperblockBits;
+  std::vector<std::size_t> starts;
+  const std::size_t step = std::max<std::size_t>(mark_words_ / std::max<std::size_t>(ranges, 1), 1);
+  for (std::size_t w = 0; w < mark_words_;) {
+    starts.push_back(w);
+    w = std::min(w + step, (w / kSuperblockWords + 1) * kSuperblockWords);
   }
-  return before;
+  const std::size_t n = starts.size();
+  auto range_end = [&](std::size_t r) { return r + 1 < n ? starts[r + 1] : mark_words_; };
+  std::vector<std::size_t> before(n + 1, 0);
+  for_each_range(n, [&](std::size_t r) {
+    std::size_t count = 0;
+    for (std::size_t w = starts[r]; w < range_end(r); ++w) count += bit_count(marks_[w]);
+    before[r + 1] = count;
+  });
+  for (std::size_t r = 0; r < n; ++r) before[r + 1] += before[r];
+  counts_.reserve(mark_words_);
+  superblock_counts_.assign((mark_words_ >> kSuperblockBits) + 1, 0);
+  for (std::size_t r = 0; r < n; ++r)
+    if (starts[r] % kSuperblockWords == 0) superblock_counts_[starts[r] >> kSuperblockBits] = before[r];
+  for_each_range(n, [&](std::size_t r) {
+    std::size_t count = before[r];
+    for (std::size_t w = starts[r]; w < range_end(r); ++w) {
+      counts_[w] = static_cast<std::uint32_t>(count - superblock_counts_[w >> kSuperblockBits]);
+      count += bit_count(marks_[w]);
+    }
+  });
+  return before[n];
 }
 
 }  // namespace sylva

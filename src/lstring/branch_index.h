@@ -20,11 +20,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <mutex>
 #include <vector>
 
 #include "lstring/module_string.h"
+#include "lstring/page_memory.h"
 
 namespace sylva {
 
@@ -108,26 +108,29 @@ class BranchIndex final : public BranchPartners {
   void build_from(const std::vector<std::size_t>& parts, const PartRunner& for_each_part) const;
   // Room for the marks of `string_`, not cleared.
   void size_marks() const;
-  // Counts the marks before each word; returns them all.
-  std::size_t count_marks() const;
+  // Counts the marks before each word, in about `ranges` ranges of words
+  // run as the parts are; returns them all.
+  std::size_t count_marks(std::size_t ranges, const PartRunner& for_each_range) const;
 
   StringView string_;
   mutable std::mutex building_;
   mutable std::atomic<bool> built_{false};
   // Bit k of word w: a bracket starts at byte 64w + k. Not a vector, so a
-  // parallel build can clear the words on the threads that mark them.
-  mutable std::unique_ptr<std::uint64_t[]> marks_;
-  mutable std::size_t mark_words_ = 0, mark_room_ = 0;
-  mutable std::vector<std::uint32_t> counts_;             // brackets before word w within its superblock
-  mutable std::vector<std::size_t> superblock_counts_;    // brackets before each superblock
+  // parallel build can clear the words on the threads that mark them. The
+  // marks and the partners grow with the string and keep their pages from
+  // step to step: reallocated at every step, they were faulted in afresh at
+  // every step, on every thread.
+  mutable page_memory::GrowingArray<std::uint64_t> marks_;
+  mutable std::size_t mark_words_ = 0;
+  mutable page_memory::GrowingArray<std::uint32_t> counts_;  // brackets before word w within its superblock
+  mutable std::vector<std::size_t> superblock_counts_;       // brackets before each superblock
   // Partners by rank, in 4 bytes while every offset fits, else in 8: pairing
   // writes half as much, and the index of a long string takes half the
   // memory.
   std::size_t narrow_below_;
   mutable bool wide_ = false;
-  mutable std::unique_ptr<std::uint32_t[]> narrow_partners_;
-  mutable std::unique_ptr<std::size_t[]> wide_partners_;
-  mutable std::size_t narrow_room_ = 0, wide_room_ = 0;
+  mutable page_memory::GrowingArray<std::uint32_t> narrow_partners_;
+  mutable page_memory::GrowingArray<std::size_t> wide_partners_;
 };
 
 }  // namespace sylva

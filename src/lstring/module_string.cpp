@@ -8,63 +8,45 @@
 #include <cstring>
 #include <new>
 
+#include "lstring/page_memory.h"
 #include "lstring/run_limits.h"
 
 namespace sylva {
 namespace {
 
-// Buffers this large are mapped pages of their own: growing one moves its
-// pages (mremap) instead of copying them, and the pages already touched stay
-// touched, so a string that grows step after step is faulted in once.
-constexpr std::size_t kMappedBuffer = std::size_t{1} << 20;
-constexpr std::size_t kPage = 4096;
+using page_memory::is_mapped;
+using page_memory::kPage;
+using page_memory::kMappedFrom;
+using page_memory::whole_pages;
 
 std::atomic<std::size_t> bytes_in_use{0};  // by every string's buffer
 std::atomic<bool> huge_pages{false};
 
-bool is_mapped(std::size_t capacity) { return capacity >= kMappedBuffer; }
-
 void advise(void* data, std::size_t capacity) {
-  if (huge_pages.load(std::memory_order_relaxed)) madvise(data, capacity, MADV_HUGEPAGE);
+  if (is_mapped(capacity) && huge_pages.load(std::memory_order_relaxed)) madvise(data, capacity, MADV_HUGEPAGE);
 }
 
 unsigned char* allocate_bytes(std::size_t& capacity) {
-  void* data = nullptr;
-  if (is_mapped(capacity)) {
-    capacity = (capacity + kPage - 1) / kPage * kPage;
-    data = mmap(nullptr, capacity, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (data == MAP_FAILED) throw std::bad_alloc();
-    advise(data, capacity);
-  } else {
-    data = std::malloc(capacity);
-    if (!data) throw std::bad_alloc();
-  }
+  unsigned char* data = page_memory::allocate(capacity);
+  advise(data, capacity);
   bytes_in_use.fetch_add(capacity, std::memory_order_relaxed);
-  return static_cast<unsigned char*>(data);
+  return data;
 }
 
 void free_bytes(void* data, std::size_t capacity) {
   if (!data) return;
-  if (is_mapped(capacity)) munmap(data, capacity);
-  else std::free(data);
+  page_memory::free(data, capacity);
   bytes_in_use.fetch_sub(capacity, std::memory_order_relaxed);
 }
 
 // `data` (of `capacity` bytes, `used` of them in use) moved to a buffer of
 // at least `wanted` bytes; `wanted` becomes the new capacity.
 unsigned char* reallocate_bytes(unsigned char* data, std::size_t capacity, std::size_t used, std::size_t& wanted) {
-  if (data && is_mapped(capacity)) {
-    wanted = (wanted + kPage - 1) / kPage * kPage;
-    void* moved = mremap(data, capacity, wanted, MREMAP_MAYMOVE);
-    if (moved == MAP_FAILED) throw std::bad_alloc();
-    advise(moved, wanted);
-    bytes_in_use.fetch_add(wanted - capacity, std::memory_order_relaxed);
-    return static_cast<unsigned char*>(moved);
-  }
-  unsigned char* fresh = allocate_bytes(wanted);
-  if (used) std::memcpy(fresh, data, used);
-  free_bytes(data, capacity);
-  return fresh;
+  unsigned char* moved = page_memory::reallocate(data, capacity, used, wanted);
+  advise(moved, wanted);
+  bytes_in_use.fetch_add(wanted, std::memory_order_relaxed);
+  if (data) bytes_in_use.fetch_sub(capacity, std::memory_order_relaxed);
+  return moved;
 }
 
 std::size_t grown_capacity(std::size_t current, std::size_t needed) {
@@ -88,8 +70,8 @@ void fault_in(unsigned char* at, std::size_t bytes) {
 
 std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
   const std::size_t from = b.capacity / kPage * kPage;
-  const std::size_t ahead = std::max(needed, from + std::max(kMappedBuffer, from / 8));
-  const std::size_t to = std::min(b.reserved, (ahead + kPage - 1) / kPage * kPage);
+  const std::size_t ahead = std::max(needed, from + std::max(kMappedFrom, from / 8));
+  const std::size_t to = std::min(b.reserved, whole_pages(ahead));
   if (to > from) fault_in(b.data + from, to - from);
   return to;
 }
@@ -180,7 +162,7 @@ void ModuleString::grow_unwritten(std::size_t bytes, std::size_t kept) {
   buffer_.reserved = reserved;
   // Mapped pages move with the buffer; into fresh ones only `kept` was copied.
   if (!is_mapped(reserved)) buffer_.capacity = reserved;
-  else if (!was_mapped) buffer_.capacity = std::min(reserved, (kept + kPage - 1) / kPage * kPage);
+  else if (!was_mapped) buffer_.capacity = std::min(reserved, whole_pages(kept));
   else buffer_.capacity = std::min(buffer_.capacity, reserved);
 }
 
@@ -201,7 +183,7 @@ void ModuleString::release_pages(std::size_t from, std::size_t to) const {
 void ModuleString::set_written_size(std::size_t size) {
   buffer_.size = size;
   // Written means faulted in: the capacity goes on from there.
-  const std::size_t written = (size + kPage - 1) / kPage * kPage;
+  const std::size_t written = whole_pages(size);
   buffer_.capacity = std::min(buffer_.reserved, std::max(buffer_.capacity, written));
 }
 
