@@ -79,7 +79,7 @@ struct SimulationOptions {
   // serial pass's (docs/parallel-derivation.md); 0: one per core.
   int threads = 0;
   // The least bytes of the old string a thread takes (derive::Derivation::set_threads).
-  std::size_t parallel_chunk_bytes = std::size_t{64} << 10;
+  std::size_t parallel_chunk_bytes = std::size_t{16} << 10;
   // ran() in rule bodies keyed by the module rather than lpfg's sequence:
   // the same string at any thread count, and such bodies run in parallel.
   bool keyed_random = false;

@@ -21,10 +21,14 @@ std::unique_ptr<ChunkOutputPool::Output> ChunkOutputPool::take(std::size_t room)
     }
   }
   if (!output) {
+    // A megabyte of address space at least, so the buffer is mapped and its
+    // pages fault in a stretch at a time, but only the room asked for
+    // faulted in now: a new buffer's pages are a pass's own cost.
     output = std::make_unique<Output>();
-    output->string.reserve(room);
+    output->string.reserve_unwritten(std::max(room, kNewBufferBytes));
   }
   output->string.clear();
+  output->string.reserve(room);
   output->writer = self;
   return output;
 }

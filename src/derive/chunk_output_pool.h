@@ -23,8 +23,8 @@ class ChunkOutputPool {
     std::thread::id writer;  // the thread that took it last
   };
 
-  // An empty buffer for the calling thread: the one it took last if the
-  // pool has it, else any, else a new one with room for `room` bytes.
+  // An empty buffer for the calling thread, with room for `room` bytes: the
+  // one it took last if the pool has it, else any, else a new one.
   std::unique_ptr<Output> take(std::size_t room);
   void give_back(std::unique_ptr<Output> output);
   // Frees all but `count` of the buffers in the pool.
@@ -32,6 +32,8 @@ class ChunkOutputPool {
   std::size_t size() const;
 
  private:
+  static constexpr std::size_t kNewBufferBytes = std::size_t{1} << 20;
+
   mutable std::mutex mutex_;
   std::vector<std::unique_ptr<Output>> spare_;
 };

@@ -278,9 +278,8 @@ void Derivation::run_in_chunks(const StringView& src, const std::vector<std::siz
            place[c] + chunk.out->string.size_bytes() <= room;
   };
   run_tasks(threads_, n, [&](std::size_t c) {
-    // Room for a part four times the usual in a new buffer: one that large
-    // has its pages faulted in a stretch at a time, not one by one.
-    chunks[c].out = chunk_outputs_.take(4 * kPartBytes);
+    chunks[c].out = chunk_outputs_.take(
+        static_cast<std::size_t>(static_cast<double>(end_of(c) - starts[c]) * growth * 1.1));
     rewrite(c, starts[c]);
     std::size_t first, last;  // the parts this thread copies
     {

@@ -14,8 +14,9 @@ namespace {
 
 using page_memory::is_mapped;
 using page_memory::kPage;
-using page_memory::kMappedFrom;
 using page_memory::whole_pages;
+
+constexpr std::size_t kFaultInStep = std::size_t{64} << 10;
 
 std::atomic<std::size_t> bytes_in_use{0};  // by every string's buffer
 std::atomic<bool> huge_pages{false};
@@ -54,12 +55,13 @@ std::size_t grown_capacity(std::size_t current, std::size_t needed) {
 }
 
 // Faults in the pages of a mapped buffer from where those faulted in end to at
-// least `needed` and an eighth of the buffer beyond, with one call, and
-// returns where they now end. On virtual machines a page fault traps to the
-// hypervisor, and faulting a stretch in at once took koch's derivation from
-// 1.29 s to about 0.6 s; the eighth keeps what is faulted in but unused
-// small. Where the kernel cannot (before Linux 5.14) pages fault in one by
-// one, as they would anyway.
+// least `needed` and an eighth of the buffer beyond (64 KiB at least), with
+// one call, and returns where they now end. On virtual machines a page fault
+// traps to the hypervisor, and faulting a stretch in at once took koch's
+// derivation from 1.29 s to about 0.6 s; the eighth keeps what is faulted in
+// but unused small, and so does the 64 KiB for a small part written into a
+// buffer of its own. Where the kernel cannot (before Linux 5.14) pages fault
+// in one by one, as they would anyway.
 void fault_in(unsigned char* at, std::size_t bytes) {
 #ifdef MADV_POPULATE_WRITE
   if (bytes) madvise(at, bytes, MADV_POPULATE_WRITE);
@@ -68,7 +70,7 @@ void fault_in(unsigned char* at, std::size_t bytes) {
 
 std::size_t populate(OwnedModuleBuffer& b, std::size_t needed) {
   const std::size_t from = b.capacity / kPage * kPage;
-  const std::size_t ahead = std::max(needed, from + std::max(kMappedFrom, from / 8));
+  const std::size_t ahead = std::max(needed, from + std::max(kFaultInStep, from / 8));
   const std::size_t to = std::min(b.reserved, whole_pages(ahead));
   if (to > from) fault_in(b.data + from, to - from);
   return to;
