@@ -14,6 +14,10 @@
 //   Threads/<model>/<steps>/<threads>/reused
 //       As Derive/.../reused, on that many threads: the speed-up once the
 //       pages are faulted in.
+//   SimulationsAtOnce/koch/<n>
+//       n Simulations deriving koch at once, each on a thread of its own (and
+//       one thread each), in one process; the slowest one's steps are timed.
+//       Against n = 1: what sharing a process costs them (its memory map).
 //   Pass/<threads>
 //       The cost of a parallel pass itself: four empty tasks per thread
 //       handed to that many threads (1, 2, 4 ... up to 16), and their end
@@ -60,6 +64,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 #include <unistd.h>
 
 #include "api/simulation.h"
@@ -163,6 +168,25 @@ void derive(benchmark::State& state, const std::string& model, int steps, bool f
   state.counters["Mmod/s_last"] = last_modules / last_seconds / 1e6;
   state.counters["Mmod/s_cpu"] = total_modules / total_cpu / 1e6;
   set_string_counters(state, d);
+}
+
+// `simulations` derivations of koch at once, each on a thread of its own and
+// on one thread, in one process; the time of the slowest.
+void simulations_at_once(benchmark::State& state, int simulations) {
+  for (auto _ : state) {
+    std::vector<double> seconds(static_cast<std::size_t>(simulations));
+    std::vector<std::thread> running;
+    for (int k = 0; k < simulations; ++k)
+      running.emplace_back([&, k] {
+        std::unique_ptr<sylva::Simulation> simulation = new_simulation("koch", 1);
+        simulation->begin();
+        const Clock::time_point start = Clock::now();
+        for (int step = 0; step < 12; ++step) simulation->step();
+        seconds[static_cast<std::size_t>(k)] = seconds_since(start);
+      });
+    for (std::thread& thread : running) thread.join();
+    state.SetIterationTime(*std::max_element(seconds.begin(), seconds.end()));
+  }
 }
 
 void pass_overhead(benchmark::State& state, int threads) {
@@ -312,6 +336,12 @@ void register_all() {
             ->UseManualTime()
             ->Iterations(m.iterations)
             ->Unit(benchmark::kMillisecond);
+  for (int simulations : {1, 2})
+    benchmark::RegisterBenchmark(("SimulationsAtOnce/koch/" + std::to_string(simulations)).c_str(),
+                                 simulations_at_once, simulations)
+        ->UseManualTime()
+        ->Iterations(3)
+        ->Unit(benchmark::kMillisecond);
   for (int threads = 1; threads <= 16; threads *= 2) {
     benchmark::RegisterBenchmark(("Pass/" + std::to_string(threads)).c_str(), pass_overhead, threads)
         ->Unit(benchmark::kMicrosecond);

@@ -62,9 +62,17 @@ std::size_t grown_capacity(std::size_t current, std::size_t needed) {
 // but unused small, and so does the 64 KiB for a small part written into a
 // buffer of its own. Where the kernel cannot (before Linux 5.14) pages fault
 // in one by one, as they would anyway.
+//
+// A call holds the process's memory map for reading until its pages are in,
+// and a thread that maps, grows or frees memory waits for it: two koch
+// derivations on two threads of one process took 302-314 ms each, against
+// 235 ms alone, while one faulted in its 200 MB string with one call. The
+// pages are faulted in 4 MiB at a time: 255-271 ms.
 void fault_in(unsigned char* at, std::size_t bytes) {
 #ifdef MADV_POPULATE_WRITE
-  if (bytes) madvise(at, bytes, MADV_POPULATE_WRITE);
+  constexpr std::size_t kStretch = std::size_t{4} << 20;
+  for (std::size_t done = 0; done < bytes; done += kStretch)
+    madvise(at + done, std::min(kStretch, bytes - done), MADV_POPULATE_WRITE);
 #endif
 }
 
