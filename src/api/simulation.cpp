@@ -84,7 +84,8 @@ Simulation::Simulation(const std::string& model_path, const SimulationOptions& o
   derivation_->set_keyed_random(options.keyed_random);
   derivation_->set_threads(options.threads > 0 ? options.threads
                                                : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
-                            options.parallel_chunk_bytes);
+                            options.parallel_chunk_bytes ? options.parallel_chunk_bytes
+                                                         : derive::Derivation::kMinChunkBytes);
   if (derivation_->types().cpfg()) {
     // A cpfg model's turtle symbols, looked up once for every interpretation;
     // its query symbols (?P ...) are module types of the model's own.

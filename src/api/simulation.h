@@ -78,8 +78,9 @@ struct SimulationOptions {
   // Threads a derivation pass may use where the result cannot differ from a
   // serial pass's (docs/parallel-derivation.md); 0: one per core.
   int threads = 0;
-  // The least bytes of the old string a thread takes (derive::Derivation::set_threads).
-  std::size_t parallel_chunk_bytes = std::size_t{16} << 10;
+  // The least bytes of the old string a thread takes (derive::Derivation::set_threads);
+  // 0: the engine's own (derive::Derivation::kMinChunkBytes).
+  std::size_t parallel_chunk_bytes = 0;
   // ran() in rule bodies keyed by the module rather than lpfg's sequence:
   // the same string at any thread count, and such bodies run in parallel.
   bool keyed_random = false;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "lstring/page_memory.h"
+
 namespace sylva::derive {
 
 std::unique_ptr<ChunkOutputPool::Output> ChunkOutputPool::take(std::size_t room) {
@@ -21,11 +23,11 @@ std::unique_ptr<ChunkOutputPool::Output> ChunkOutputPool::take(std::size_t room)
     }
   }
   if (!output) {
-    // A megabyte of address space at least, so the buffer is mapped and its
-    // pages fault in a stretch at a time, but only the room asked for
-    // faulted in now: a new buffer's pages are a pass's own cost.
+    // Room enough to be mapped, so its pages fault in a stretch at a time,
+    // but only the room asked for faulted in now: a new buffer's pages are a
+    // pass's own cost.
     output = std::make_unique<Output>();
-    output->string.reserve_unwritten(std::max(room, kNewBufferBytes));
+    output->string.reserve_unwritten(std::max(room, page_memory::kMappedFrom));
   }
   output->string.clear();
   output->string.reserve(room);

@@ -32,8 +32,6 @@ class ChunkOutputPool {
   std::size_t size() const;
 
  private:
-  static constexpr std::size_t kNewBufferBytes = std::size_t{1} << 20;
-
   mutable std::mutex mutex_;
   std::vector<std::unique_ptr<Output>> spare_;
 };

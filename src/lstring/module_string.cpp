@@ -183,7 +183,7 @@ void ModuleString::fault_in(std::size_t from, std::size_t to) {
 
 void ModuleString::release_pages(std::size_t from, std::size_t to) const {
   if (!is_mapped(buffer_.reserved)) return;
-  from = (from + kPage - 1) / kPage * kPage;
+  from = whole_pages(from);
   to = std::min(to, buffer_.reserved) / kPage * kPage;
   if (to > from) madvise(buffer_.data + from, to - from, MADV_DONTNEED);
 }
