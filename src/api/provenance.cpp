@@ -1,6 +1,10 @@
 #include "api/provenance.h"
 
-#include <openssl/evp.h>
+// SHA-256 without the EVP layer: EVP starts OpenSSL's providers and reads its
+// configuration file, about 0.3 ms of every run, which records its model's
+// hash before deriving.
+#define OPENSSL_API_COMPAT 10101
+#include <openssl/sha.h>
 
 #include <cstdint>
 #include <cctype>
@@ -27,28 +31,25 @@ namespace sylva {
 
 // ---- SHA-256
 
-Sha256::Sha256() : context_(EVP_MD_CTX_new()) {
-  if (!context_ || EVP_DigestInit_ex(static_cast<EVP_MD_CTX*>(context_), EVP_sha256(), nullptr) != 1)
-    throw std::runtime_error("cannot start a SHA-256 digest (OpenSSL)");
+Sha256::Sha256() : context_(new SHA256_CTX) {
+  if (SHA256_Init(static_cast<SHA256_CTX*>(context_)) != 1) throw std::runtime_error("cannot start a SHA-256 digest");
 }
 
-Sha256::~Sha256() { EVP_MD_CTX_free(static_cast<EVP_MD_CTX*>(context_)); }
+Sha256::~Sha256() { delete static_cast<SHA256_CTX*>(context_); }
 
 void Sha256::add(std::string_view bytes) {
-  if (!bytes.empty() && EVP_DigestUpdate(static_cast<EVP_MD_CTX*>(context_), bytes.data(), bytes.size()) != 1)
-    throw std::runtime_error("SHA-256 digest failed (OpenSSL)");
+  if (!bytes.empty() && SHA256_Update(static_cast<SHA256_CTX*>(context_), bytes.data(), bytes.size()) != 1)
+    throw std::runtime_error("SHA-256 digest failed");
 }
 
 std::string Sha256::hex() {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  if (EVP_DigestFinal_ex(static_cast<EVP_MD_CTX*>(context_), digest, &length) != 1)
-    throw std::runtime_error("SHA-256 digest failed (OpenSSL)");
+  unsigned char digest[SHA256_DIGEST_LENGTH];
+  if (SHA256_Final(digest, static_cast<SHA256_CTX*>(context_)) != 1) throw std::runtime_error("SHA-256 digest failed");
   static const char* kHex = "0123456789abcdef";
   std::string out;
-  for (unsigned int i = 0; i < length; ++i) {
-    out += kHex[digest[i] >> 4];
-    out += kHex[digest[i] & 15];
+  for (unsigned char byte : digest) {
+    out += kHex[byte >> 4];
+    out += kHex[byte & 15];
   }
   return out;
 }

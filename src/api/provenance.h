@@ -31,7 +31,7 @@
 
 namespace sylva {
 
-// ---- SHA-256 (FIPS 180-4), through OpenSSL's libcrypto
+// ---- SHA-256 (FIPS 180-4), through OpenSSL's libcrypto (linked statically)
 class Sha256 {
  public:
   Sha256();
@@ -43,7 +43,7 @@ class Sha256 {
   std::string hex();
 
  private:
-  void* context_;  // EVP_MD_CTX
+  void* context_;  // SHA256_CTX
 };
 std::string sha256_hex(std::string_view bytes);
 // The SHA-256 of a file's bytes; nullopt when it cannot be read.

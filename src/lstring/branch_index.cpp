@@ -62,8 +62,8 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
   });
   const std::size_t brackets = count_marks(n, for_each_part);
   wide_ = s.end >= std::min<std::size_t>(narrow_below_, kNarrowUnmatched);
-  if (wide_) wide_partners_.reserve(brackets);
-  else narrow_partners_.reserve(brackets);
+  if (wide_) wide_partners_.make_room(brackets);
+  else narrow_partners_.make_room(brackets);
   struct Bracket {
     std::size_t rank, offset;
   };
@@ -112,7 +112,7 @@ void BranchIndex::build_from(const std::vector<std::size_t>& parts, const PartRu
 
 void BranchIndex::size_marks() const {
   mark_words_ = string_.end / 64 + 1;
-  marks_.reserve(mark_words_);
+  marks_.make_room(mark_words_);
 }
 
 std::size_t BranchIndex::count_marks(std::size_t ranges, const PartRunner& for_each_range) const {
@@ -135,7 +135,7 @@ std::size_t BranchIndex::count_marks(std::size_t ranges, const PartRunner& for_e
     before[r + 1] = count;
   });
   for (std::size_t r = 0; r < n; ++r) before[r + 1] += before[r];
-  counts_.reserve(mark_words_);
+  counts_.make_room(mark_words_);
   superblock_counts_.assign((mark_words_ >> kSuperblockBits) + 1, 0);
   for (std::size_t r = 0; r < n; ++r)
     if (starts[r] % kSuperblockWords == 0) superblock_counts_[starts[r] >> kSuperblockBits] = before[r];

@@ -27,7 +27,7 @@ unsigned char* reallocate(unsigned char* data, std::size_t capacity, std::size_t
 
 // An array of a trivially copyable T in such memory, for what is rebuilt at
 // every step of a growing string: room grows by half again when it runs
-// short, and what was written stays where it was.
+// short, and the pages written stay faulted in.
 template <class T>
 class GrowingArray {
  public:
@@ -36,12 +36,14 @@ class GrowingArray {
   GrowingArray(const GrowingArray&) = delete;
   GrowingArray& operator=(const GrowingArray&) = delete;
 
-  // Room for at least `count` elements; the elements written are kept.
-  void reserve(std::size_t count) {
+  // Room for at least `count` elements, whose values are then undefined:
+  // nothing is copied when the array moves from malloc's memory to pages of
+  // its own, so the fresh pages are faulted in by the threads that fill them.
+  void make_room(std::size_t count) {
     if (count <= capacity_) return;
     std::size_t bytes = std::max(count, capacity_ + capacity_ / 2) * sizeof(T);
-    data_ = reinterpret_cast<T*>(reallocate(reinterpret_cast<unsigned char*>(data_), capacity_ * sizeof(T),
-                                            capacity_ * sizeof(T), bytes));
+    data_ = reinterpret_cast<T*>(
+        reallocate(reinterpret_cast<unsigned char*>(data_), capacity_ * sizeof(T), /*used=*/0, bytes));
     capacity_ = bytes / sizeof(T);
   }
   T* get() const { return data_; }

@@ -1,10 +1,9 @@
 #include "studio/studio_server.h"
 
-#include <httplib.h>
-
 #include <fstream>
 #include <random>
 
+#include "studio/http_plugin.h"
 #include "studio/model_session.h"
 #include "studio/served_path.h"
 #include "studio/web_assets.h"
@@ -15,27 +14,27 @@ namespace {
 
 using nlohmann::json;
 
-void send_json(httplib::Response& res, const json& body, int status = 200) {
-  res.status = status;
+void send_json(HttpResponse& res, const json& body, int status = 200) {
+  res.set_status(status);
   res.set_content(body.dump(), "application/json");
   res.set_header("Cache-Control", "no-store");
 }
 
-void send_error(httplib::Response& res, int status, const std::string& message) {
+void send_error(HttpResponse& res, int status, const std::string& message) {
   send_json(res, {{"error", message}}, status);
 }
 
-json body_json(const httplib::Request& req) {
-  if (req.body.empty()) return json::object();
-  json body = json::parse(req.body, nullptr, false);
+json body_json(const HttpRequest& req) {
+  if (req.body().empty()) return json::object();
+  json body = json::parse(req.body(), nullptr, false);
   if (body.is_discarded() || !body.is_object()) throw std::invalid_argument("the request's body is not a JSON object");
   return body;
 }
 
-int int_param(const httplib::Request& req, const char* name, int fallback) {
+int int_param(const HttpRequest& req, const char* name, int fallback) {
   if (!req.has_param(name)) return fallback;
   try {
-    return std::stoi(req.get_param_value(name));
+    return std::stoi(req.param(name));
   } catch (const std::exception&) {
     throw std::invalid_argument(std::string("the parameter ") + name + " is not a number");
   }
@@ -55,8 +54,8 @@ const char* content_type_of(const std::string& path) {
 // Whether the request comes for this server by a name it answers to: a web
 // page elsewhere cannot reach a loopback server through a name of its own
 // (DNS rebinding).
-bool host_allowed(const httplib::Request& req, const std::string& address, int port) {
-  std::string host = req.get_header_value("Host");
+bool host_allowed(const HttpRequest& req, const std::string& address, int port) {
+  std::string host = req.header("Host");
   const std::string suffix = ":" + std::to_string(port);
   if (host.size() > suffix.size() && host.compare(host.size() - suffix.size(), suffix.size(), suffix) == 0)
     host.resize(host.size() - suffix.size());
@@ -64,8 +63,8 @@ bool host_allowed(const httplib::Request& req, const std::string& address, int p
          (address == "0.0.0.0" || address == "::");
 }
 
-std::string cookie_token(const httplib::Request& req) {
-  const std::string cookies = req.get_header_value("Cookie");
+std::string cookie_token(const HttpRequest& req) {
+  const std::string cookies = req.header("Cookie");
   const std::string key = "sylva_token=";
   const std::size_t at = cookies.find(key);
   if (at == std::string::npos) return "";
@@ -78,14 +77,15 @@ std::string cookie_token(const httplib::Request& req) {
 struct StudioServer::Impl {
   ModelSession& session;
   ServerOptions options;
-  httplib::Server http;
+  std::unique_ptr<HttpServer> http{reinterpret_cast<HttpServer* (*)()>(plugin_symbol(
+      "libsylva_http.so", "sylva_new_http_server", "serves the studio"))()};
   int port = 0;
 
   Impl(ModelSession& s, ServerOptions o) : session(s), options(std::move(o)) { routes(); }
 
   // Runs `work`, answering bad requests with 400 and failures with 500.
   template <typename Work>
-  static void guarded(httplib::Response& res, Work&& work) {
+  static void guarded(HttpResponse& res, Work&& work) {
     try {
       work();
     } catch (const std::invalid_argument& e) {
@@ -96,74 +96,69 @@ struct StudioServer::Impl {
   }
 
   void routes() {
-    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    http->set_filter([this](const HttpRequest& req, HttpResponse& res) {
       if (!host_allowed(req, options.address, port)) {
         send_error(res, 403, "this server answers only to its own address");
-        return httplib::Server::HandlerResponse::Handled;
+        return true;
       }
       if (!options.token.empty()) {
-        const bool carried = req.get_param_value("token") == options.token ||
-                             req.get_header_value("X-Sylva-Token") == options.token ||
+        const bool carried = req.param("token") == options.token || req.header("X-Sylva-Token") == options.token ||
                              cookie_token(req) == options.token;
         if (!carried) {
           send_error(res, 403, "this studio needs its token: open the address it printed");
-          return httplib::Server::HandlerResponse::Handled;
+          return true;
         }
         // The page's later requests carry it as a cookie.
-        if (req.get_param_value("token") == options.token)
+        if (req.param("token") == options.token)
           res.set_header("Set-Cookie", "sylva_token=" + options.token + "; HttpOnly; SameSite=Strict; Path=/");
       }
-      return httplib::Server::HandlerResponse::Unhandled;
+      return false;
     });
 
     auto asset = [](const std::string& name) {
-      return [name](const httplib::Request&, httplib::Response& res) {
+      return [name](const HttpRequest&, HttpResponse& res) {
         const std::optional<WebAsset> a = web_asset(name);
         if (!a) return send_error(res, 404, "no " + name);
-        res.set_content(a->content.data(), a->content.size(), a->content_type);
+        res.set_content(std::string(a->content), a->content_type);
       };
     };
-    http.Get("/", asset("index.html"));
-    http.Get("/index.html", asset("index.html"));
-    http.Get("/studio.js", asset("studio.js"));
-    http.Get("/studio.css", asset("studio.css"));
+    http->get("/", asset("index.html"));
+    http->get("/index.html", asset("index.html"));
+    http->get("/studio.js", asset("studio.js"));
+    http->get("/studio.css", asset("studio.css"));
 
     // The model folder's files, and nothing outside it.
-    http.Get(R"(/files/(.+))", [this](const httplib::Request& req, httplib::Response& res) {
-      const std::optional<std::filesystem::path> path = served_path(session.folder(), req.matches[1].str());
+    http->get(R"(/files/(.+))", [this](const HttpRequest& req, HttpResponse& res) {
+      const std::optional<std::filesystem::path> path = served_path(session.folder(), req.match(1));
       if (!path) return send_error(res, 403, "only the model's folder is served");
       WholeFile file = read_whole_file(path->string());
-      if (!file) return send_error(res, 404, "cannot read " + req.matches[1].str());
-      res.set_content(file.bytes, content_type_of(path->string()));
+      if (!file) return send_error(res, 404, "cannot read " + req.match(1));
+      res.set_content(std::move(file.bytes), content_type_of(path->string()));
       res.set_header("Cache-Control", "no-store");
     });
 
-    http.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
+    http->get("/api/state", [this](const HttpRequest&, HttpResponse& res) {
       send_json(res, session.state_json());
     });
     // The picture in two parts: its triangles and lines, and its instances.
     auto picture_part = [this](std::string ModelSession::Picture::*part, const char* type) {
-      return [this, part, type](const httplib::Request&, httplib::Response& res) {
+      return [this, part, type](const HttpRequest&, HttpResponse& res) {
         auto [scene, version] = session.scene();
         if (!scene || ((*scene).*part).empty()) {
-          res.status = 204;
+          res.set_status(204);
           return;
         }
         // The picture is shared, not copied: it outlives the answer.
-        res.set_content_provider(((*scene).*part).size(), type,
-                                 [scene = scene, part](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-                                   sink.write(((*scene).*part).data() + offset, length);
-                                   return true;
-                                 });
+        res.set_shared_content(std::shared_ptr<const std::string>(scene, &((*scene).*part)), type);
         res.set_header("X-Sylva-Scene-Version", std::to_string(version));
         res.set_header("Cache-Control", "no-store");
       };
     };
-    http.Get("/api/scene.glb", picture_part(&ModelSession::Picture::glb, "model/gltf-binary"));
-    http.Get("/api/scene-instances.bin", picture_part(&ModelSession::Picture::instances, "application/octet-stream"));
+    http->get("/api/scene.glb", picture_part(&ModelSession::Picture::glb, "model/gltf-binary"));
+    http->get("/api/scene-instances.bin", picture_part(&ModelSession::Picture::instances, "application/octet-stream"));
 
     auto post = [this](const char* path, auto action) {
-      http.Post(path, [this, action](const httplib::Request& req, httplib::Response& res) {
+      http->post(path, [this, action](const HttpRequest& req, HttpResponse& res) {
         guarded(res, [&] {
           action(body_json(req));
           send_json(res, session.state_json());
@@ -186,32 +181,32 @@ struct StudioServer::Impl {
 
     // Questions the worker answers.
     auto ask = [this](const char* path, auto make_request, auto answer) {
-      http.Get(path, [this, make_request, answer](const httplib::Request& req, httplib::Response& res) {
+      http->get(path, [this, make_request, answer](const HttpRequest& req, HttpResponse& res) {
         guarded(res, [&] { answer(req, res, session.ask(make_request(req))); });
       });
     };
-    auto answer_json = [](const httplib::Request&, httplib::Response& res, const WorkerMessage& m) {
+    auto answer_json = [](const HttpRequest&, HttpResponse& res, const WorkerMessage& m) {
       json out = m.json;
       out.erase("ok");
       send_json(res, out);
     };
     ask("/api/string",
-        [](const httplib::Request& req) {
+        [](const HttpRequest& req) {
           return json{{"op", "string"},
                       {"offset", std::max(0, int_param(req, "offset", 0))},
                       {"limit", std::max(0, int_param(req, "limit", 1000))},
-                      {"search", req.get_param_value("search")}};
+                      {"search", req.param("search")}};
         },
         answer_json);
-    ask("/api/counts", [](const httplib::Request&) { return json{{"op", "counts"}}; }, answer_json);
+    ask("/api/counts", [](const HttpRequest&) { return json{{"op", "counts"}}; }, answer_json);
     ask("/api/module",
-        [](const httplib::Request& req) {
+        [](const HttpRequest& req) {
           return json{{"op", "module"}, {"view", int_param(req, "view", 0)}, {"index", int_param(req, "index", 0)}};
         },
         answer_json);
     ask("/api/export",
-        [](const httplib::Request& req) {
-          const std::string format = req.has_param("format") ? req.get_param_value("format") : "png";
+        [](const HttpRequest& req) {
+          const std::string format = req.has_param("format") ? req.param("format") : "png";
           static const std::vector<std::string> formats = {"png", "svg", "pdf", "ps",  "eps",
                                                            "obj", "mtl", "ply", "glb", "string"};
           if (std::find(formats.begin(), formats.end(), format) == formats.end())
@@ -222,8 +217,8 @@ struct StudioServer::Impl {
                       {"width", int_param(req, "width", 800)},
                       {"height", int_param(req, "height", 800)}};
         },
-        [this](const httplib::Request& req, httplib::Response& res, const WorkerMessage& m) {
-          std::string format = req.has_param("format") ? req.get_param_value("format") : "png";
+        [this](const HttpRequest& req, HttpResponse& res, const WorkerMessage& m) {
+          std::string format = req.has_param("format") ? req.param("format") : "png";
           const std::string name =
               std::filesystem::path(session.model()).stem().string() + (format == "string" ? ".str" : "." + format);
           res.set_content(m.payload, content_type_of(name));
@@ -239,17 +234,16 @@ StudioServer::~StudioServer() = default;
 
 int StudioServer::bind() {
   Impl& i = *impl_;
-  if (i.options.port == 0) i.port = i.http.bind_to_any_port(i.options.address);
-  else i.port = i.http.bind_to_port(i.options.address, i.options.port) ? i.options.port : -1;
+  i.port = i.http->bind(i.options.address, i.options.port);
   if (i.port <= 0)
     throw std::runtime_error("cannot listen on " + i.options.address +
                              (i.options.port ? ":" + std::to_string(i.options.port) : std::string()));
   return i.port;
 }
 
-void StudioServer::serve() { impl_->http.listen_after_bind(); }
+void StudioServer::serve() { impl_->http->listen(); }
 
-void StudioServer::stop() { impl_->http.stop(); }
+void StudioServer::stop() { impl_->http->stop(); }
 
 std::string make_token() {
   std::random_device random;  // the system's random source

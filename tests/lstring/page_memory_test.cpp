@@ -1,6 +1,7 @@
-// Arrays that grow with a string (the branch index's) keep what they hold,
-// and the pages written before a growth move with them: an index rebuilt at
-// every step faults in only what it grew by. Residency is checked with
+// Arrays that grow with a string (the branch index's) copy nothing when they
+// grow, and the pages written before a growth move with them: an index
+// rebuilt at every step faults in only what it grew by, on the threads that
+// fill it. Residency is checked with
 // mincore, faults with getrusage.
 #include <gtest/gtest.h>
 #include <sys/mman.h>
@@ -31,28 +32,31 @@ std::size_t resident_pages(const void* at, std::size_t bytes) {
   return n;
 }
 
-TEST(GrowingArray, KeepsWhatItHoldsFromSmallToMapped) {
+TEST(GrowingArray, MovingToPagesOfItsOwnTouchesNone) {
+  constexpr std::size_t kSmall = (900 << 10) / 4;  // 900 KiB of 4-byte words: from malloc
+  constexpr std::size_t kMapped = std::size_t{1} << 20;  // 4 MiB: mapped
   page_memory::GrowingArray<std::uint32_t> array;
-  array.reserve(1000);  // 4 KB: from malloc
-  for (std::uint32_t k = 0; k < 1000; ++k) array[k] = 7 * k + 1;
-  array.reserve(std::size_t{1} << 20);  // 4 MiB: mapped
-  for (std::uint32_t k = 0; k < 1000; ++k) ASSERT_EQ(array[k], 7 * k + 1) << k;
-  array[(std::size_t{1} << 20) - 1] = 5;
-  array.reserve((std::size_t{1} << 20) + 1);  // mapped to mapped
-  for (std::uint32_t k = 0; k < 1000; ++k) ASSERT_EQ(array[k], 7 * k + 1) << k;
-  EXPECT_EQ(array[(std::size_t{1} << 20) - 1], 5u);
+  array.make_room(kSmall);
+  for (std::uint32_t k = 0; k < kSmall; ++k) array[k] = k;
+  array.make_room(kMapped);
+  // Its values are rebuilt after a growth: copying the 900 KiB would fault in
+  // 225 pages on this thread, before the threads that fill them could.
+  EXPECT_EQ(resident_pages(array.get(), kMapped * 4), 0u);
+  for (std::size_t k = 0; k < kMapped; ++k) array[k] = static_cast<std::uint32_t>(3 * k);
+  array.make_room(kMapped + 1);  // mapped to mapped
+  for (std::size_t k = 0; k < kMapped; k += 4099) ASSERT_EQ(array[k], 3 * k) << k;
 }
 
 TEST(GrowingArray, PagesWrittenStayInMemoryWhenItGrows) {
   constexpr std::size_t kWords = std::size_t{1} << 18;  // 2 MiB of 8-byte words
   page_memory::GrowingArray<std::uint64_t> array;
-  array.reserve(kWords);
+  array.make_room(kWords);
   madvise(array.get(), kWords * 8, MADV_NOHUGEPAGE);  // page by page, as the count below assumes
   ASSERT_EQ(resident_pages(array.get(), kWords * 8), 0u);
   for (std::size_t k = 0; k < kWords; ++k) array[k] = k;
   ASSERT_EQ(resident_pages(array.get(), kWords * 8), kWords * 8 / kPage);
   const long faults_before = minor_faults();
-  array.reserve(4 * kWords);
+  array.make_room(4 * kWords);
   // The pages written moved with the array, not copied into fresh ones
   // (512 faults); the rest are untouched.
   EXPECT_LT(minor_faults() - faults_before, 64);
