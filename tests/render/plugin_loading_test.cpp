@@ -1,9 +1,11 @@
 // The libraries behind images (OSMesa and LLVM, libpng, cairo, GraphicsMagick)
-// are loaded only by a run that makes an image, through their plugins.
+// are loaded only by a run that makes an image, through their plugins; a run
+// that writes a string loads the C and C++ runtimes and its model alone.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,26 @@ TEST(PluginLoading, AStringRunLoadsNoImageLibrary) {
   const std::string loaded = loaded_libraries(model_dir(), {"model.l", "--steps", "0", "--string", "out.txt"});
   for (const char* library : {"libsylva_gl", "libOSMesa", "libLLVM", "libpng", "libcairo", "libGraphicsMagick"})
     EXPECT_EQ(loaded.find(library), std::string::npos) << library << " was loaded";
+}
+
+// Each library costs a run about half a millisecond to load (docs/performance.md).
+TEST(PluginLoading, AStringRunLoadsTheRuntimesAndItsModelAlone) {
+  const std::string loaded = loaded_libraries(model_dir(), {"model.l", "--steps", "0", "--string", "out.txt"});
+  std::istringstream lines(loaded);
+  int libraries = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t at = line.find("calling init: ");
+    if (at == std::string::npos) continue;
+    ++libraries;
+    const std::filesystem::path path = line.substr(at + 14);
+    if (path.parent_path() == std::filesystem::path(SYLVA_TEST_CACHE_DIR)) continue;  // the model
+    const std::string name = path.filename().string();
+    bool runtime = false;
+    for (const char* prefix : {"ld-linux", "libc.so", "libm.so", "libgcc_s.so", "libstdc++.so"})
+      runtime = runtime || name.rfind(prefix, 0) == 0;
+    EXPECT_TRUE(runtime) << name << " was loaded";
+  }
+  EXPECT_GE(libraries, 3) << loaded;
 }
 
 TEST(PluginLoading, AnImageRunLoadsTheGlPluginAlone) {
