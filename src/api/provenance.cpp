@@ -1,8 +1,8 @@
 #include "api/provenance.h"
 
 // SHA-256 without the EVP layer: EVP starts OpenSSL's providers and reads its
-// configuration file, about 0.3 ms of every run, which records its model's
-// hash before deriving.
+// configuration file at the first hash, and every run hashes its model before
+// deriving (1.4 ms of a 0-step run's 3.9 ms).
 #define OPENSSL_API_COMPAT 10101
 #include <openssl/sha.h>
 

@@ -1,6 +1,7 @@
 // The libraries behind images (OSMesa and LLVM, libpng, cairo, GraphicsMagick)
 // are loaded only by a run that makes an image, through their plugins; a run
-// that writes a string loads the C and C++ runtimes and its model alone.
+// that writes a string loads the C and C++ runtimes, toml++ and its model
+// alone.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -38,7 +39,7 @@ TEST(PluginLoading, AStringRunLoadsNoImageLibrary) {
 }
 
 // Each library costs a run about half a millisecond to load (docs/performance.md).
-TEST(PluginLoading, AStringRunLoadsTheRuntimesAndItsModelAlone) {
+TEST(PluginLoading, AStringRunLoadsTheRuntimesAndItsModel) {
   const std::string loaded = loaded_libraries(model_dir(), {"model.l", "--steps", "0", "--string", "out.txt"});
   std::istringstream lines(loaded);
   int libraries = 0;
@@ -50,7 +51,7 @@ TEST(PluginLoading, AStringRunLoadsTheRuntimesAndItsModelAlone) {
     if (path.parent_path() == std::filesystem::path(SYLVA_TEST_CACHE_DIR)) continue;  // the model
     const std::string name = path.filename().string();
     bool runtime = false;
-    for (const char* prefix : {"ld-linux", "libc.so", "libm.so", "libgcc_s.so", "libstdc++.so"})
+    for (const char* prefix : {"ld-linux", "libc.so", "libm.so", "libgcc_s.so", "libstdc++.so", "libtomlplusplus.so"})
       runtime = runtime || name.rfind(prefix, 0) == 0;
     EXPECT_TRUE(runtime) << name << " was loaded";
   }
