@@ -14,6 +14,7 @@
 
 #include "experiment/plan.h"
 #include "experiment/sample_stream.h"
+#include "experiment/toml_text.h"
 
 namespace sylva::experiment {
 namespace {
@@ -298,7 +299,7 @@ Plan parse_plan(const std::string& text, const std::string& path) {
   const Reader reader(path);
   toml::table root;
   try {
-    root = toml::parse(text, path);
+    root = toml::parse(toml_text_for_parser(text, path), path);
   } catch (const toml::parse_error& error) {
     throw ModelError(reader.at(error.source()), std::string(error.description()));
   }
