@@ -3,6 +3,7 @@
 #include <cxxabi.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -12,6 +13,9 @@
 #include <typeinfo>
 
 #include "support/interruption.h"
+
+// glibc: the top of the main thread's stack, as the program started.
+extern "C" void* __libc_stack_end;
 
 namespace sylva::model_faults {
 
@@ -106,6 +110,16 @@ void on_fatal_signal(int signal_number, siginfo_t* info, void* context) {
 }
 
 void note_stack_bounds() {
+  // The main thread's stack reaches from its top down by the stack's limit.
+  // pthread_getattr_np would find the same bounds by reading /proc/self/maps,
+  // 0.1 ms of every run's start.
+  rlimit limit{};
+  if (getpid() == gettid() && getrlimit(RLIMIT_STACK, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const auto top = reinterpret_cast<std::uintptr_t>(__libc_stack_end);
+    stack_high = (top + 4095) / 4096 * 4096;
+    stack_low = stack_high - limit.rlim_cur;
+    return;
+  }
   pthread_attr_t attributes;
   if (pthread_getattr_np(pthread_self(), &attributes) != 0) return;
   void* low = nullptr;
