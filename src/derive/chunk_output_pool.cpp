@@ -50,4 +50,11 @@ std::size_t ChunkOutputPool::size() const {
   return spare_.size();
 }
 
+std::vector<page_memory::Pages> ChunkOutputPool::pages() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<page_memory::Pages> pages;
+  for (const std::unique_ptr<Output>& spare : spare_) pages.push_back(spare->string.faulted_in_pages());
+  return pages;
+}
+
 }  // namespace sylva::derive

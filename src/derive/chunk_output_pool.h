@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lstring/module_string.h"
+#include "lstring/page_memory.h"
 
 namespace sylva::derive {
 
@@ -30,6 +31,8 @@ class ChunkOutputPool {
   // Frees all but `count` of the buffers in the pool.
   void keep_at_most(std::size_t count);
   std::size_t size() const;
+  // The pages of the buffers in the pool, to be given back before it is freed.
+  std::vector<page_memory::Pages> pages() const;
 
  private:
   mutable std::mutex mutex_;

@@ -109,7 +109,7 @@ void Derivation::add_query_modules(const std::vector<ModuleId>& ids) {
 Derivation::~Derivation() {
   model_.control->host = nullptr;
   model_.control->message = nullptr;
-  release_strings_in_parallel();
+  release_memory_in_parallel();
 }
 
 void Derivation::message(const std::string& text) const {

@@ -230,7 +230,7 @@ class Derivation {
 
   // Gives the strings' pages back on every thread (before the destructor
   // frees them).
-  void release_strings_in_parallel();
+  void release_memory_in_parallel();
   // Why passes of `kind` run serially whatever the string, or empty.
   std::string serial_reason(abi::RuleKind kind) const;
   // Where the chunks of a parallel pass over `src` start, for a pass that

@@ -122,25 +122,30 @@ Derivation::KeyedRandomPass::~KeyedRandomPass() { control.keyed_random = nullptr
 
 // Freeing a string's pages is the kernel's work, on the thread that frees
 // it, while the others wait: at the end of a koch run, 24 ms for its two
-// strings (250 MB). The pages are given back in stretches on every thread
-// first, and the freeing then finds none.
-void Derivation::release_strings_in_parallel() {
+// strings (250 MB). The pages of the strings, of the branch index and of the
+// chunks' buffers (two for each thread, over a megabyte each) are given back
+// in stretches on every thread first, and the freeing then finds none.
+void Derivation::release_memory_in_parallel() {
   if (threads_ < 2) return;
   constexpr std::size_t kStretch = std::size_t{8} << 20;
   struct Stretch {
-    const ModuleString* string;
+    page_memory::Pages pages;
     std::size_t from;
   };
   try {
+    std::vector<page_memory::Pages> buffers = branches_.pages();
+    for (const page_memory::Pages& pages : chunk_outputs_.pages()) buffers.push_back(pages);
+    buffers.push_back(string_.faulted_in_pages());
+    buffers.push_back(next_.faulted_in_pages());
     std::vector<Stretch> stretches;
-    for (const ModuleString* string : {&string_, &next_})
-      for (std::size_t from = 0; from < string->ready_bytes(); from += kStretch) stretches.push_back({string, from});
+    for (const page_memory::Pages& pages : buffers)
+      for (std::size_t from = 0; from < pages.bytes; from += kStretch) stretches.push_back({pages, from});
     if (stretches.size() < 2) return;
     run_tasks(threads_, stretches.size(), [&](std::size_t k) {
-      stretches[k].string->release_pages(stretches[k].from, stretches[k].from + kStretch);
+      page_memory::release(stretches[k].pages, stretches[k].from, stretches[k].from + kStretch);
     });
   } catch (...) {
-    // No memory or no thread to spare: the strings are freed all the same.
+    // No memory or no thread to spare: the buffers are freed all the same.
   }
 }
 

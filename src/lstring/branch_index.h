@@ -62,6 +62,10 @@ class BranchIndex final : public BranchPartners {
   void build_in_parts(const std::vector<std::size_t>& parts, const PartRunner& for_each_part);
   // Whether the index was built since it was prepared: the pass needed it.
   bool built() const { return built_.load(std::memory_order_acquire); }
+  // The pages of its arrays, to be given back before it is freed.
+  std::vector<page_memory::Pages> pages() const {
+    return {marks_.pages(), counts_.pages(), narrow_partners_.pages(), wide_partners_.pages()};
+  }
 
   std::size_t eb_of(std::size_t sb) const override { return partner(sb); }
   std::size_t sb_of(std::size_t eb) const override { return partner(eb); }

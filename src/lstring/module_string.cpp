@@ -181,11 +181,12 @@ void ModuleString::fault_in(std::size_t from, std::size_t to) {
   if (to > from) sylva::fault_in(buffer_.data + from, to - from);
 }
 
+page_memory::Pages ModuleString::faulted_in_pages() const {
+  return is_mapped(buffer_.reserved) ? page_memory::Pages{buffer_.data, buffer_.capacity} : page_memory::Pages{};
+}
+
 void ModuleString::release_pages(std::size_t from, std::size_t to) const {
-  if (!is_mapped(buffer_.reserved)) return;
-  from = whole_pages(from);
-  to = std::min(to, buffer_.reserved) / kPage * kPage;
-  if (to > from) madvise(buffer_.data + from, to - from, MADV_DONTNEED);
+  if (is_mapped(buffer_.reserved)) page_memory::release({buffer_.data, buffer_.reserved}, from, to);
 }
 
 void ModuleString::set_written_size(std::size_t size) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lstring/module_types.h"
+#include "lstring/page_memory.h"
 #include "sylva/abi.h"
 
 namespace sylva {
@@ -124,6 +125,8 @@ class ModuleString {
   // system, as freeing the buffer would: for a string about to be freed,
   // whose pages several threads give back at once (disjoint stretches).
   void release_pages(std::size_t from, std::size_t to) const;
+  // The pages of a mapped buffer that may be in memory: those faulted in.
+  page_memory::Pages faulted_in_pages() const;
 
   // Offsets known to start modules, in order, or none: some of the starts a
   // pass noted as it wrote the string, and where a parallel pass joined its

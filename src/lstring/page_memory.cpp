@@ -27,6 +27,12 @@ void free(void* data, std::size_t capacity) {
   else std::free(data);
 }
 
+void release(const Pages& pages, std::size_t from, std::size_t to) {
+  from = whole_pages(from);
+  to = std::min(to, pages.bytes) / kPage * kPage;
+  if (pages.data && to > from) madvise(pages.data + from, to - from, MADV_DONTNEED);
+}
+
 unsigned char* reallocate(unsigned char* data, std::size_t capacity, std::size_t used, std::size_t& wanted) {
   if (data && is_mapped(capacity)) {
     wanted = whole_pages(wanted);

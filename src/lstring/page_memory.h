@@ -16,6 +16,18 @@ constexpr std::size_t kMappedFrom = std::size_t{1} << 20;
 inline bool is_mapped(std::size_t capacity) { return capacity >= kMappedFrom; }
 inline std::size_t whole_pages(std::size_t bytes) { return (bytes + kPage - 1) / kPage * kPage; }
 
+// A mapped buffer's pages, to be given back to the system before it is
+// freed; nothing for a buffer from malloc.
+struct Pages {
+  unsigned char* data = nullptr;
+  std::size_t bytes = 0;
+};
+// Gives the whole pages within bytes [from, to) of `pages` back to the
+// system, as freeing the buffer would (they read as zeros after). Freeing a
+// large buffer's pages is the kernel's work on the thread that frees it:
+// threads giving back disjoint stretches first share it.
+void release(const Pages& pages, std::size_t from, std::size_t to);
+
 // A buffer of at least `capacity` bytes; `capacity` becomes its size (whole
 // pages for a mapped one). Throws std::bad_alloc.
 unsigned char* allocate(std::size_t& capacity);
@@ -47,6 +59,10 @@ class GrowingArray {
     capacity_ = bytes / sizeof(T);
   }
   T* get() const { return data_; }
+  Pages pages() const {
+    const std::size_t bytes = capacity_ * sizeof(T);
+    return is_mapped(bytes) ? Pages{reinterpret_cast<unsigned char*>(data_), bytes} : Pages{};
+  }
   T& operator[](std::size_t k) const { return data_[k]; }
 
  private:
