@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "derive/chunk_output_pool.h"
+#include "lstring/page_memory.h"
 #include "test_support.h"
 
 namespace sylva::derive {
@@ -43,6 +44,32 @@ TEST(ChunkOutputPool, ANewBufferFaultsInOnlyTheRoomAskedFor) {
   for (unsigned char page : pages) resident += page & 1;
   EXPECT_GE(resident, std::size_t{25});  // 100 KiB
   EXPECT_LE(resident, std::size_t{32});
+}
+
+// The pages the pool names are those its buffers faulted in: giving them
+// back leaves none in memory, so freeing the buffers afterwards finds none.
+TEST(ChunkOutputPool, NamesThePagesItsBuffersFaultedIn) {
+  if (!test::kernel_populates_pages()) GTEST_SKIP() << "this kernel cannot fault in a stretch of pages at once";
+  ChunkOutputPool pool;
+  std::unique_ptr<Output> output = pool.take(100 << 10);
+  const unsigned char* data = output->string.data();
+  const std::size_t mapped = output->string.reserved_bytes();
+  pool.give_back(std::move(output));
+  const std::vector<sylva::page_memory::Pages> pages = pool.pages();
+  ASSERT_EQ(pages.size(), 1u);
+  EXPECT_EQ(pages[0].data, data);
+  EXPECT_GE(pages[0].bytes, std::size_t{100} << 10);
+  EXPECT_LT(pages[0].bytes, mapped);
+  auto resident = [&] {
+    std::vector<unsigned char> in(mapped / 4096);
+    EXPECT_EQ(mincore(const_cast<unsigned char*>(data), mapped, in.data()), 0);
+    std::size_t n = 0;
+    for (unsigned char page : in) n += page & 1;
+    return n;
+  };
+  EXPECT_GE(resident(), std::size_t{25});
+  sylva::page_memory::release(pages[0], 0, pages[0].bytes);
+  EXPECT_EQ(resident(), 0u);
 }
 
 TEST(ChunkOutputPool, AThreadGetsBackTheBufferItTookLast) {
