@@ -228,8 +228,8 @@ class Derivation {
   // Notes in `growth` how much next_ grew over string_ in the pass just run.
   void note_growth(Growth& growth) const;
 
-  // Gives the strings' pages back on every thread (before the destructor
-  // frees them).
+  // Gives the pages of the strings, the branch index and the chunks' buffers
+  // back on every thread (before the destructor frees them).
   void release_memory_in_parallel();
   // Why passes of `kind` run serially whatever the string, or empty.
   std::string serial_reason(abi::RuleKind kind) const;
