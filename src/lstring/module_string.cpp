@@ -185,10 +185,6 @@ page_memory::Pages ModuleString::faulted_in_pages() const {
   return is_mapped(buffer_.reserved) ? page_memory::Pages{buffer_.data, buffer_.capacity} : page_memory::Pages{};
 }
 
-void ModuleString::release_pages(std::size_t from, std::size_t to) const {
-  if (is_mapped(buffer_.reserved)) page_memory::release({buffer_.data, buffer_.reserved}, from, to);
-}
-
 void ModuleString::set_written_size(std::size_t size) {
   buffer_.size = size;
   // Written means faulted in: the capacity goes on from there.

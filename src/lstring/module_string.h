@@ -121,10 +121,6 @@ class ModuleString {
   void fault_in(std::size_t from, std::size_t to);
   // The first `size` bytes were written in place.
   void set_written_size(std::size_t size);
-  // Gives the pages of bytes [from, to) of a mapped buffer back to the
-  // system, as freeing the buffer would: for a string about to be freed,
-  // whose pages several threads give back at once (disjoint stretches).
-  void release_pages(std::size_t from, std::size_t to) const;
   // The pages of a mapped buffer that may be in memory: those faulted in.
   page_memory::Pages faulted_in_pages() const;
 

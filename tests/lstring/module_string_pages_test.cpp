@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lstring/module_string.h"
+#include "lstring/page_memory.h"
 #include "test_support.h"
 
 namespace sylva::test {
@@ -66,14 +67,16 @@ TEST_F(ModuleStringPages, AStretchIsFaultedInOnAsking) {
 // (from the page after `from`'s first byte to the page holding `to`), from
 // several threads at once.
 TEST_F(ModuleStringPages, PagesAreGivenBackAStretchAtATime) {
+  const page_memory::Pages buffer{const_cast<unsigned char*>(whole_.data()), whole_.reserved_bytes()};
+  auto release_pages = [&](std::size_t from, std::size_t to) { page_memory::release(buffer, from, to); };
   whole_.fault_in(0, 16 * kPage);
-  std::thread other([&] { whole_.release_pages(8 * kPage, 12 * kPage); });
-  whole_.release_pages(2 * kPage + 100, 6 * kPage + 100);
+  std::thread other([&] { release_pages(8 * kPage, 12 * kPage); });
+  release_pages(2 * kPage + 100, 6 * kPage + 100);
   other.join();
   const std::vector<bool> pages = resident(whole_.data(), 16 * kPage);
   for (std::size_t p = 0; p < pages.size(); ++p)
     EXPECT_EQ(pages[p], !((p >= 3 && p < 6) || (p >= 8 && p < 12))) << "page " << p;
-  whole_.release_pages(14 * kPage, 200 << 20);  // not past the buffer
+  release_pages(14 * kPage, 200 << 20);  // not past the buffer
   EXPECT_EQ(count(resident(whole_.data(), 8 << 20)), 16u - 3 - 4 - 2);
 }
 
